@@ -1,0 +1,107 @@
+// Simulator speed: simulated seconds per wall-clock second (the real-time factor) for the robot driving
+// down a built-in corridor with laser and camera at several rates, on one thread.
+// Usage: doorplate_sim_bench [--world FILE] [--seconds S] [--seed N] [--markdown OUT.md]
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "doorplate_localization/sim/simulator.h"
+#include "doorplate_localization/sim/world_loader.h"
+
+using namespace doorplate_localization;
+
+namespace {
+
+struct Case {
+  const char* name;
+  double laser_hz;
+  double camera_hz;
+};
+
+struct Result {
+  Case c;
+  double sim_s;
+  double wall_s;
+  int scans;
+  int images;
+};
+
+Result RunCase(const World& world, const Case& c, double seconds, std::uint64_t seed) {
+  SimulatorOptions options;
+  options.seed = seed;
+  Simulator sim(world, options);
+  sim.SetCommand(0.4, 0.0);
+  const int steps = static_cast<int>(seconds / options.physics_step_s);
+  const int laser_every = c.laser_hz > 0 ? static_cast<int>(1.0 / (c.laser_hz * options.physics_step_s)) : 0;
+  const int camera_every = c.camera_hz > 0 ? static_cast<int>(1.0 / (c.camera_hz * options.physics_step_s)) : 0;
+  int scans = 0, images = 0;
+  double checksum = 0.0;
+  const auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < steps; ++i) {
+    sim.Step();
+    if (laser_every && i % laser_every == 0) checksum += sim.Scan().ranges_m[0], ++scans;
+    if (camera_every && i % camera_every == 0) checksum += sim.CameraImage().at<cv::Vec3b>(0, 0)[0], ++images;
+    if (sim.bumped()) sim.Teleport(world.start_pose);  // keep driving for the whole run
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (checksum == -1.0) std::puts("");  // keep the work observable
+  return {c, steps * options.physics_step_s, wall, scans, images};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string world_file = std::string(DOORPLATE_SOURCE_DIR) + "/worlds/paper_real_corridor.yaml";
+  std::string markdown;
+  double seconds = 60.0;
+  std::uint64_t seed = 1;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) {
+        std::cerr << "missing value after " << arg << "\n";
+        std::exit(2);
+      }
+      return argv[++i];
+    };
+    if (arg == "--world") world_file = value();
+    else if (arg == "--seconds") seconds = std::stod(value());
+    else if (arg == "--seed") seed = std::stoull(value());
+    else if (arg == "--markdown") markdown = value();
+    else {
+      std::cerr << "usage: doorplate_sim_bench [--world FILE] [--seconds S] [--seed N] [--markdown OUT.md]\n";
+      return 2;
+    }
+  }
+  World world;
+  try {
+    world = LoadWorldFile(world_file);
+  } catch (const WorldFileError& e) {
+    std::cerr << e.what() << "\n";
+    return 1;
+  }
+  const std::vector<Case> cases = {{"physics only (100 Hz)", 0, 0},
+                                   {"laser 10 Hz", 10, 0},
+                                   {"laser 10 Hz + camera 10 Hz", 10, 10},
+                                   {"laser 10 Hz + camera 30 Hz", 10, 30}};
+  std::string table = "| configuration | simulated s | wall s | real-time factor | ms per scan+image step |\n"
+                      "|---|---|---|---|---|\n";
+  for (const Case& c : cases) {
+    const Result r = RunCase(world, c, seconds, seed);
+    char row[256];
+    std::snprintf(row, sizeof(row), "| %s | %.0f | %.2f | %.1f× | %.2f |\n", c.name, r.sim_s, r.wall_s,
+                  r.sim_s / r.wall_s, 1000.0 * r.wall_s / std::max(1, std::max(r.scans, r.images)));
+    table += row;
+    std::cout << row << std::flush;
+  }
+  if (!markdown.empty()) {
+    std::ofstream out(markdown);
+    out << "# Simulator speed\n\nWorld `" << world.name << "`, robot driving at 0.4 m/s, physics step 10 ms, "
+        << "seed " << seed << ", one thread. Real-time factor = simulated seconds per wall-clock second "
+        << "(the baseline, 1×, is real time).\n\n" << table;
+  }
+  return 0;
+}

@@ -1,0 +1,35 @@
+# ROS layer: thin nodelets over the core libraries, and message conversions.
+add_library(doorplate_nodelets
+  src/ros/corridor_sim_nodelet.cpp
+  src/ros/corridor_sim_options.cpp
+  src/ros/sim_conversions.cpp
+  src/ros/scan_conversions.cpp
+  src/ros/wall_follower_options.cpp
+  src/ros/wall_follower_nodelet.cpp)
+target_include_directories(doorplate_nodelets PUBLIC include PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(doorplate_nodelets doorplate_sim doorplate_behaviour ${catkin_LIBRARIES})
+add_dependencies(doorplate_nodelets ${PROJECT_NAME}_generate_messages_cpp)
+install(TARGETS doorplate_nodelets LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
+
+if(CATKIN_ENABLE_TESTING)
+  catkin_add_gtest(sim_conversions_test test/ros/sim_conversions_test.cpp)
+  target_include_directories(sim_conversions_test PRIVATE ${catkin_INCLUDE_DIRS})
+  target_link_libraries(sim_conversions_test doorplate_nodelets GTest::gtest_main ${catkin_LIBRARIES})
+
+  catkin_add_gtest(scan_conversions_test test/ros/scan_conversions_test.cpp)
+  target_include_directories(scan_conversions_test PRIVATE ${catkin_INCLUDE_DIRS})
+  target_link_libraries(scan_conversions_test doorplate_nodelets GTest::gtest_main ${catkin_LIBRARIES})
+
+  # rostests: a nodelet manager loads our nodelets through pluginlib; the checker waits on topics.
+  # The checker also tests LoadCorridorSimOptions (needs a parameter server), hence src/ros and the library.
+  add_rostest_gtest(corridor_sim_nodelet_rostest test/ros/corridor_sim_nodelet.test
+                    test/ros/corridor_sim_nodelet_rostest.cpp)
+  target_include_directories(corridor_sim_nodelet_rostest PRIVATE src/ros ${catkin_INCLUDE_DIRS})
+  target_link_libraries(corridor_sim_nodelet_rostest doorplate_nodelets doorplate_sim ${catkin_LIBRARIES})
+endif()
+
+# Tools that read ROS data (bags).
+add_executable(doorplate_run_report src/ros/tools/run_report.cpp)
+target_include_directories(doorplate_run_report PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(doorplate_run_report doorplate_sim ${catkin_LIBRARIES})
+install(TARGETS doorplate_run_report RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})

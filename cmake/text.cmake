@@ -1,0 +1,43 @@
+# Doorplate text extractor (ROS-free): MSER band detector, Tesseract OCR, reading validator, plate
+# tracker (paper section 3.2). Tesseract 5 and Leptonica come from pkg-config; MSER from features2d.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(TESSERACT REQUIRED tesseract lept)
+
+add_library(doorplate_text
+  src/text/box_nms.cpp
+  src/text/character_grouping.cpp
+  src/text/mser_band_detector.cpp
+  src/text/ocr_preprocess.cpp
+  src/text/tesseract_ocr.cpp
+  src/text/plate_reading_validator.cpp
+  src/text/plate_tracker.cpp
+  src/text/text_extractor.cpp)
+target_include_directories(doorplate_text PUBLIC include ${OpenCV_INCLUDE_DIRS}
+  PRIVATE ${TESSERACT_INCLUDE_DIRS})
+target_link_libraries(doorplate_text PUBLIC opencv_core opencv_imgproc
+  PRIVATE opencv_features2d ${TESSERACT_LINK_LIBRARIES})
+if(DOORPLATE_SANITIZE)
+  # GCC 12 false positive inside libstdc++'s <regex> (std::function members "may be used
+  # uninitialized") that appears only with -fsanitize; this is the one file building a std::regex.
+  set_source_files_properties(src/text/plate_reading_validator.cpp PROPERTIES
+    COMPILE_OPTIONS -Wno-maybe-uninitialized)
+endif()
+
+# Frames per second of the extractor with and without the band (one core: OMP_THREAD_LIMIT=1).
+add_executable(doorplate_text_bench bench/text_bench.cpp)
+target_link_libraries(doorplate_text_bench doorplate_text opencv_imgcodecs)
+
+install(TARGETS doorplate_text doorplate_text_bench
+  LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
+  RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+
+if(CATKIN_ENABLE_TESTING)
+  foreach(name box_nms character_grouping mser_band_detector ocr_preprocess tesseract_ocr
+               plate_reading_validator plate_tracker text_extractor)
+    catkin_add_gtest(${name}_test test/text/${name}_test.cpp)
+    target_link_libraries(${name}_test doorplate_text GTest::gtest_main)
+  endforeach()
+  foreach(name tesseract_ocr mser_band_detector)
+    target_link_libraries(${name}_test opencv_imgcodecs)  # they read the real-photo fixtures
+  endforeach()
+endif()

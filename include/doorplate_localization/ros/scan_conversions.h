@@ -1,0 +1,18 @@
+// Checks of incoming LaserScan messages, shared by every nodelet that consumes scans.
+#pragma once
+
+#include <string>
+
+#include <sensor_msgs/LaserScan.h>
+
+namespace doorplate_localization {
+
+// Returns "" if the scan's geometry is usable, else what is wrong with it ("no ranges", "angle_increment
+// must be finite and non-zero, got nan", ...). Individual NaN/±inf/negative ranges do NOT make a scan
+// unusable: consumers skip those beams (REP-117).
+std::string ValidateScan(const sensor_msgs::LaserScan& scan);
+
+// True if range r is a usable return of `scan`: finite and within [range_min, range_max].
+bool IsValidRange(const sensor_msgs::LaserScan& scan, float r);
+
+}  // namespace doorplate_localization

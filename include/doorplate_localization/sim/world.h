@@ -1,0 +1,103 @@
+// In-memory corridor world: walls, doors, doorplates, distractor text, robot start and sensor settings.
+// Frame: the world frame is the ground-truth map frame, x along the main corridor, z up from the floor.
+// Units: metres, radians; colours are RGB 0..255. The file format is docs/world-format.md.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "doorplate_localization/common/geometry2d.h"
+#include "doorplate_localization/sim/sensor_options.h"
+
+namespace doorplate_localization {
+
+using ColorRgb = std::array<std::uint8_t, 3>;
+
+// A straight wall from `segment.a` to `segment.b`, floor to ceiling. Positions on it ("offset") are
+// metres from `segment.a` towards `segment.b`.
+struct Wall {
+  std::string id;
+  Segment segment;
+  bool corridor_side_left = true;  // the corridor lies left of a→b; rooms behind open doors lie right
+  ColorRgb color{225, 222, 210};
+};
+
+struct Door {
+  std::string id;
+  int wall_index = -1;          // into World::walls
+  double offset_m = 0.0;        // door centre along the wall
+  double width_m = 0.9;
+  double height_m = 2.1;
+  bool open = false;            // open: a gap in the wall showing a room behind it
+  double room_depth_m = 3.0;    // room box generated behind an open door
+  double room_width_m = 3.0;
+  ColorRgb color{140, 95, 60};
+};
+
+enum class TextKind { kPlate, kDistractor };
+
+// Hershey fonts of OpenCV, by name in world files.
+enum class SignFont { kSimplex, kDuplex, kComplex, kTriplex };
+
+// A flat rectangle with text on a wall: a doorplate (room number) or distractor text (poster, sign).
+struct TextSign {
+  TextKind kind = TextKind::kPlate;
+  std::string text;
+  int wall_index = -1;
+  int door_index = -1;          // plates: the door they label, -1 if none
+  double offset_m = 0.0;        // sign centre along the wall
+  double center_height_m = 1.6;
+  double width_m = 0.24;
+  double height_m = 0.12;
+  ColorRgb background{245, 245, 240};
+  ColorRgb foreground{20, 20, 20};
+  SignFont font = SignFont::kSimplex;
+  bool corridor_side_left = true;  // side of its wall's a→b the sign faces (copied from the wall)
+};
+
+// An opaque vertical rectangle the sensors can see: a wall piece, a lintel over an open door, or a
+// generated room wall. `wall_index` >= 0 means its texture comes from that wall's doors and signs,
+// with `wall_offset_at_a_m` the wall offset of `segment.a`.
+struct Surface {
+  Segment segment;
+  double z_min_m = 0.0;
+  double z_max_m = 2.6;
+  int wall_index = -1;
+  double wall_offset_at_a_m = 0.0;
+  ColorRgb color{225, 222, 210};
+};
+
+struct World {
+  int format_version = 1;
+  std::string name;
+  std::string description;
+  std::string source_file;      // where it was loaded from ("" if built in code)
+  double wall_height_m = 2.6;
+  ColorRgb floor_color{150, 150, 145};
+  ColorRgb ceiling_color{235, 235, 235};
+  std::vector<Wall> walls;
+  std::vector<Door> doors;
+  std::vector<TextSign> signs;
+  Pose2D start_pose;
+  double robot_radius_m = 0.2;
+  SensorOptions sensors;
+
+  // Derived by BuildSurfaces(): what the laser and the camera see.
+  std::vector<Surface> surfaces;
+
+  // Ground truth for experiments: the plates (kind == kPlate).
+  std::vector<const TextSign*> Plates() const;
+  // World position (z ignored) of a sign's centre on its wall.
+  Vec2 SignPosition(const TextSign& sign) const;
+  // Unit normal of a wall pointing to its left (left_side) or right side of a→b.
+  Vec2 WallNormal(int wall_index, bool left_side) const;
+  // Unit normal of a wall pointing into the corridor.
+  Vec2 CorridorNormal(int wall_index) const;
+};
+
+// Splits walls at open doors, adds lintels and room boxes; fills `world.surfaces`. Idempotent.
+void BuildSurfaces(World& world);
+
+}  // namespace doorplate_localization

@@ -1,0 +1,96 @@
+// Multi-frame voting over doorplate readings. As the robot drives along the corridor with a sideways
+// camera, a plate's box slides horizontally across consecutive images; the tracker associates boxes
+// frame to frame, accumulates confidence-weighted votes per text, and reports each plate ONCE, when its
+// box centre crosses the vertical line through the principal point (either direction) — the moment the
+// plate is abeam of the camera, where its bearing is smallest — or, if it had fewer than
+// min_voted_frames valid readings then, as soon as it has them.
+// Frame: image pixels (x right, y down). Bearings: radians from the optical axis, positive towards the
+// image's left (counter-clockwise seen from above, REP-103), i.e. atan((cx_px - u) / fx_px).
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+namespace doorplate_localization {
+
+// One text box of one frame after OCR and validation.
+struct PlateObservation {
+  cv::Rect box_px;         // full-image pixels
+  std::string text;        // validated room text; empty if OCR/validation gave nothing (box still tracked)
+  double confidence = 0.0; // OCR confidence in [0, 1] (vote weight)
+  std::string raw_text;    // OCR output before validation (diagnostics)
+};
+
+// A plate reported at its centre-line crossing.
+struct PlateReport {
+  std::string text;            // winning text
+  double vote_share = 0.0;     // winning votes / all votes of the track, (0, 1]
+  double mean_confidence = 0.0;  // mean OCR confidence of the frames that voted for the winner
+  double confidence = 0.0;     // vote_share × mean_confidence: the report's overall confidence
+  int voted_frame_count = 0;   // frames with a valid reading in this track
+  int observed_frame_count = 0;  // frames the box was seen in, with or without a reading
+  cv::Rect box_px;             // box in the reporting frame (the crossing frame unless votes were late)
+  double bearing_rad = 0.0;    // of the box centre in the reporting frame
+  double stamp_s = 0.0;        // stamp of the reporting frame
+  int track_id = 0;
+};
+
+struct PlateTrackerOptions {
+  double fx_px = 554.2562584220407;  // focal length; default: 640 px wide, 60° horizontal FOV
+  double cx_px = 320.0;              // principal point column: the centre line that triggers reports
+  // Association of a box to a track (greedy, nearest predicted centre first):
+  double max_center_jump_px = 120.0;           // |centre x − predicted centre x|
+  double max_vertical_offset_to_height = 0.5;  // |Δ centre y| / track box height
+  double max_height_ratio = 1.6;               // taller / shorter box height
+  int max_missed_frames = 2;   // a track unseen for more consecutive frames is dropped
+  int min_voted_frames = 2;    // a crossing track reports only once it has this many valid readings
+};
+
+class PlateTracker {
+ public:
+  // Throws std::invalid_argument naming the field of an out-of-range option.
+  explicit PlateTracker(const PlateTrackerOptions& options);
+
+  // Feeds one frame's observations (stamp in seconds). Returns the reports of this frame: a track
+  // reports once, in the first frame in which it has crossed the centre line AND has at least
+  // min_voted_frames valid readings (so a plate read only after crossing reports a few frames late,
+  // with that frame's box and bearing). Tracks unseen for more than max_missed_frames are dropped;
+  // one that vanishes before reporting is dropped without a report. A stamp older than the previous
+  // one (bag loop, simulator restart) resets the tracker first.
+  std::vector<PlateReport> Update(const std::vector<PlateObservation>& observations, double stamp_s);
+
+  void Reset();
+  size_t num_tracks() const { return tracks_.size(); }
+  double BearingRad(double u_px) const;
+
+ private:
+  struct Track {
+    int id = 0;
+    cv::Rect box_px;
+    double velocity_px_per_s = 0.0;
+    double last_stamp_s = 0.0;
+    int missed_frames = 0;
+    int observed_frames = 0;
+    int voted_frames = 0;
+    bool crossed = false;
+    bool reported = false;
+    std::map<std::string, double> votes;        // text → summed confidence
+    std::map<std::string, int> vote_frames;     // text → frames voting for it
+  };
+
+  void Associate(const std::vector<PlateObservation>& observations, double stamp_s,
+                 std::vector<int>* track_of_observation) const;
+  void UpdateTrack(Track& track, const PlateObservation& observation, double stamp_s) const;
+  bool MakeReport(const Track& track, PlateReport* report) const;
+
+  const PlateTrackerOptions options_;
+  std::vector<Track> tracks_;
+  int next_id_ = 1;
+  double last_stamp_s_ = 0.0;
+  bool has_stamp_ = false;
+};
+
+}  // namespace doorplate_localization

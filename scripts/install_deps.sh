@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Installs every build, run and test dependency of doorplate_localization from Debian 12's own packages.
+# Usage: scripts/install_deps.sh [--with-viz]   (run as root, or with sudo available)
+set -euo pipefail
+SUDO=""; [ "$(id -u)" = 0 ] || SUDO=sudo
+export DEBIAN_FRONTEND=noninteractive
+PKGS=(
+  # toolchain
+  build-essential cmake pkg-config python3 python3-numpy catkin catkin-lint
+  # ROS 1 (Debian's own)
+  ros-core-dev ros-message-generation ros-message-runtime libroscpp-dev librostest-dev python3-rostest
+  python3-roslaunch python3-rostopic python3-rosnode python3-rosbag rosbash rospack-tools
+  libnodeletlib-dev libnodeletlib-tools pluginlib-dev libtf2-ros-dev libtf2-geometry-msgs-dev
+  libsensor-msgs-dev libnav-msgs-dev libgeometry-msgs-dev libvisualization-msgs-dev libstd-srvs-dev
+  librosbag-dev libcv-bridge-dev libimage-transport-dev
+  python3-sensor-msgs python3-nav-msgs python3-geometry-msgs python3-tf2-msgs python3-std-msgs
+  # core libraries
+  libmrpt-dev libopencv-dev libtesseract-dev tesseract-ocr-eng libsuitesparse-dev libyaml-cpp-dev
+  libeigen3-dev libgtest-dev
+)
+if [ "${1:-}" = "--with-viz" ]; then
+  PKGS+=(rviz xvfb xauth imagemagick)
+fi
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${PKGS[@]}"

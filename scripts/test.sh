@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Builds the package and runs every test: the ROS-free core gtests, the message-conversion gtests and the
+# rostests (each starts its own ROS master). With --sanitize, also builds the core under ASan+UBSan in
+# <repo>/build-asan and runs the core tests there. Prints "N passed, N failed" and exits non-zero on any failure.
+# Usage: scripts/test.sh [--sanitize]
+set -uo pipefail
+repo="$(cd "$(dirname "$0")/.." && pwd)"
+sanitize=0
+[ "${1:-}" = "--sanitize" ] && sanitize=1
+build="${DOORPLATE_BUILD:-$repo/build}"
+status=0
+
+bash "$repo/scripts/build.sh" "$build" || { echo "build failed"; exit 1; }
+source "$repo/scripts/env.sh" "$build"
+rm -rf "$build/test_results"
+cmake --build "$build" --target run_tests -- -j1 2>&1 | tee "$build/run_tests.log" | grep -E "^\[ *(RUN|OK|FAILED|PASSED) |^\[ROSTEST\]|^SUMMARY|^ \* RESULT|^-- run_tests" || true
+
+passed=0; failed=0
+summary=$(/usr/bin/python3 "$repo/scripts/count_test_results.py" "$build/test_results")
+echo "$summary" | sed '$d'
+read -r passed failed <<< "$(echo "$summary" | tail -n1)"
+
+if [ "$sanitize" = 1 ]; then
+  echo "== sanitizer run (ASan + UBSan) of the ROS-free core tests"
+  asan="$repo/build-asan"
+  source "$repo/scripts/env.sh" "$asan"
+  cmake -S "$repo" -B "$asan" -DCMAKE_BUILD_TYPE=Debug -DDOORPLATE_SANITIZE=ON -DCATKIN_ENABLE_TESTING=ON \
+    -DPYTHON_EXECUTABLE=/usr/bin/python3 > "$asan.cmake.log" 2>&1 || { cat "$asan.cmake.log"; exit 1; }
+  cmake --build "$asan" --target core_tests -- -j2 || { echo "sanitizer build failed"; exit 1; }
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  while read -r bin; do
+    [ -n "$bin" ] || continue
+    if "$bin" --gtest_brief=1 > "$asan/$(basename "$bin").log" 2>&1; then
+      passed=$((passed + 1)); echo "[sanitize] $(basename "$bin"): ok"
+    else
+      failed=$((failed + 1)); echo "[sanitize] $(basename "$bin"): FAILED"; tail -n 40 "$asan/$(basename "$bin").log"
+    fi
+  done < "$asan/core_tests.txt"
+fi
+
+echo "tests: $passed passed, $failed failed"
+[ "$failed" = 0 ] && [ "$passed" -gt 0 ] || status=1
+exit $status

@@ -1,0 +1,37 @@
+// Parameters of CorridorSimNodelet, read and validated once from its private namespace.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include <ros/node_handle.h>
+
+#include "doorplate_localization/ros/param_reader.h"
+
+#include "doorplate_localization/sim/simulator.h"
+#include "doorplate_localization/sim/world.h"
+
+namespace doorplate_localization {
+
+struct CorridorSimOptions {
+  std::string world_file;           // ~world (required): the world YAML, docs/world-format.md
+  World world;                      // loaded from world_file; its sensor settings give the rates
+  SimulatorOptions simulator;       // ~seed, ~physics_step_s, ~max_linear_speed_mps, ~max_angular_speed_rps
+  double real_time_factor = 1.0;    // sim seconds per wall second; 0 = as fast as possible
+  bool publish_clock = true;        // publish /clock (run the graph with /use_sim_time true)
+  double cmd_vel_timeout_s = 0.5;   // sim seconds without cmd_vel after which the robot stops
+  // Publish map -> odom computed from the true pose ("perfect localization"); off when a localizer runs.
+  bool publish_ground_truth_tf = false;
+  std::string odom_frame_id = "odom";
+  std::string base_frame_id = "base_link";
+  std::string laser_frame_id = "laser";
+  std::string camera_body_frame_id = "camera_link";      // x along the optical axis (REP-103)
+  std::string camera_frame_id = "camera_optical";        // z forward, x right, y down
+  std::string ground_truth_frame_id = "map";              // the world frame
+};
+
+// Reads every parameter of `private_nh`, loads the world file and validates. Throws ParameterError
+// naming the parameter (e.g. "/corridor_sim/real_time_factor must be >= 0, got -1").
+CorridorSimOptions LoadCorridorSimOptions(ros::NodeHandle& private_nh);
+
+}  // namespace doorplate_localization

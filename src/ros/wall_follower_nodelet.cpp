@@ -1,0 +1,136 @@
+// WallFollowerNodelet: corridor following with the laser (paper Sec. 3.2) as a thin nodelet over
+// WallFollower. Subscribes scan (sensor_msgs/LaserScan, any frame with a tf to base_link); publishes
+// cmd_vel (geometry_msgs/Twist), ~state (std_msgs/String, latched: following | no_wall | end_reached |
+// disabled | no_valid_scan) and ~corridor_width (std_msgs/Float32, metres, when both walls are seen).
+// Service ~enable (std_srvs/SetBool) starts and stops driving. Parameters: wall_follower_options.h.
+#include <mutex>
+
+#include <geometry_msgs/Twist.h>
+#include <nodelet/nodelet.h>
+#include <pluginlib/class_list_macros.hpp>
+#include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+#include <std_msgs/Float32.h>
+#include <std_msgs/String.h>
+#include <std_srvs/SetBool.h>
+#include <tf2/utils.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include "doorplate_localization/ros/scan_conversions.h"
+#include "wall_follower_options.h"
+
+namespace doorplate_localization {
+
+class WallFollowerNodelet : public nodelet::Nodelet {
+ private:
+  void onInit() override {
+    ros::NodeHandle& nh = getNodeHandle();
+    ros::NodeHandle& pnh = getPrivateNodeHandle();
+    try {
+      options_ = LoadWallFollowerOptions(pnh);
+      follower_ = std::make_unique<WallFollower>(options_.follower);
+    } catch (const std::exception& e) {
+      NODELET_FATAL("%s", e.what());
+      throw;
+    }
+    enabled_ = options_.enabled;
+    tf_listener_ = std::make_unique<tf2_ros::TransformListener>(tf_buffer_);
+    cmd_pub_ = nh.advertise<geometry_msgs::Twist>("cmd_vel", 1);
+    state_pub_ = pnh.advertise<std_msgs::String>("state", 1, /*latch=*/true);
+    width_pub_ = pnh.advertise<std_msgs::Float32>("corridor_width", 1);
+    enable_srv_ = pnh.advertiseService("enable", &WallFollowerNodelet::OnEnable, this);
+    scan_sub_ = nh.subscribe("scan", 1, &WallFollowerNodelet::OnScan, this);
+    watchdog_ = nh.createTimer(ros::Duration(options_.scan_timeout_s), &WallFollowerNodelet::OnWatchdog, this);
+    PublishState(enabled_ ? "waiting_for_scan" : "disabled");
+  }
+
+  bool OnEnable(std_srvs::SetBool::Request& req, std_srvs::SetBool::Response& res) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    enabled_ = req.data;
+    if (!enabled_) Stop("disabled");
+    res.success = true;
+    res.message = enabled_ ? "driving" : "stopped";
+    return true;
+  }
+
+  void OnScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    // validate → convert → core → publish
+    std::string problem = ValidateScan(*scan);
+    double yaw_in_base = 0.0;
+    if (problem.empty()) {
+      try {
+        const auto tf = tf_buffer_.lookupTransform(options_.base_frame_id, scan->header.frame_id, scan->header.stamp,
+                                                   ros::Duration(0.1));
+        yaw_in_base = tf2::getYaw(tf.transform.rotation);
+      } catch (const tf2::TransformException& e) {
+        problem = std::string("no tf from ") + scan->header.frame_id + " to " + options_.base_frame_id + ": " + e.what();
+      }
+    }
+    if (!problem.empty()) {
+      NODELET_ERROR_THROTTLE(2.0, "%s: %s; stopping", scan_sub_.getTopic().c_str(), problem.c_str());
+      Stop("no_valid_scan");
+      return;
+    }
+    last_valid_scan_ = ros::Time::now();
+    if (!enabled_) return;
+    const CorridorObservation obs =
+        follower_->Observe(scan->ranges, scan->angle_min + yaw_in_base, scan->angle_increment);
+    WallFollowState state;
+    const VelocityCommand cmd = follower_->Command(obs, &state);
+    geometry_msgs::Twist twist;
+    twist.linear.x = cmd.linear_mps;
+    twist.angular.z = cmd.angular_rps;
+    cmd_pub_.publish(twist);
+    if (obs.width_m > 0.0) {
+      std_msgs::Float32 width;
+      width.data = static_cast<float>(obs.width_m);
+      width_pub_.publish(width);
+    }
+    PublishState(state == WallFollowState::kFollowing ? "following"
+                 : state == WallFollowState::kNoWall  ? "no_wall"
+                                                      : "end_reached");
+  }
+
+  void OnWatchdog(const ros::TimerEvent&) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (enabled_ && !last_valid_scan_.isZero() &&
+        (ros::Time::now() - last_valid_scan_).toSec() > options_.scan_timeout_s) {
+      NODELET_WARN_THROTTLE(5.0, "%s: no valid scan for %.1f s; stopping", scan_sub_.getTopic().c_str(),
+                            options_.scan_timeout_s);
+      Stop("no_valid_scan");
+    }
+  }
+
+  void Stop(const std::string& state) {
+    cmd_pub_.publish(geometry_msgs::Twist());
+    PublishState(state);
+  }
+
+  void PublishState(const std::string& state) {
+    if (state == last_state_) return;
+    last_state_ = state;
+    std_msgs::String msg;
+    msg.data = state;
+    state_pub_.publish(msg);
+    NODELET_INFO("corridor following: %s", state.c_str());
+  }
+
+  WallFollowerNodeOptions options_;
+  std::unique_ptr<WallFollower> follower_;
+  tf2_ros::Buffer tf_buffer_;
+  std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
+  ros::Publisher cmd_pub_, state_pub_, width_pub_;
+  ros::Subscriber scan_sub_;
+  ros::ServiceServer enable_srv_;
+  ros::Timer watchdog_;
+  std::mutex mutex_;
+  bool enabled_ = true;
+  ros::Time last_valid_scan_;
+  std::string last_state_;
+};
+
+}  // namespace doorplate_localization
+
+PLUGINLIB_EXPORT_CLASS(doorplate_localization::WallFollowerNodelet, nodelet::Nodelet)

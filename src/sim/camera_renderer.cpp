@@ -1,0 +1,551 @@
+// Sideways camera renderer. The scene is made of vertical rectangles (World::surfaces), so a camera with a
+// horizontal optical axis sees every image column as one vertical plane: each column casts one 2D ray,
+// sorts the surfaces it crosses by depth and fills its rows near to far (Wolfenstein-style ray casting,
+// exact for this scene). The camera's pitch is a pure rotation, i.e. the homography K·R·K⁻¹, applied by
+// one remap from a taller unpitched image. Signs are sampled from mip-mapped textures drawn once with
+// OpenCV's anti-aliased Hershey fonts, so digits stay crisp at any distance.
+// Length: ~550 lines, over the ~400 guideline: the ray caster, the pitch maps and Project share one camera
+// model and stay together; the sign textures and the image degradations (~170 lines of free functions)
+// could move to their own file once cmake/sim.cmake lists one.
+#include "doorplate_localization/sim/camera_renderer.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+#include <opencv2/imgproc.hpp>
+
+namespace doorplate_localization {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kMaxHitsPerColumn = 12;   // nearest surfaces kept per column (enough for rooms behind doors)
+constexpr double kNearDepthM = 0.02;    // surfaces closer than this along the optical axis are clipped
+constexpr double kSignPxPerM = 1500.0;  // sign texture resolution (the camera needs < 400 px/m at 1.5 m)
+constexpr double kMaxSignTexturePx = 4096.0;
+constexpr double kDoorFrameM = 0.05;
+constexpr int kNoiseTableSize = 4096;   // indexed by 12 bits of a 16-bit random number
+
+// The camera's horizontal frame in the world: position, optical axis on the floor, image x axis.
+struct CameraFrame {
+  Vec2 position;
+  Vec2 forward;
+  Vec2 right;
+};
+
+CameraFrame FrameAt(const CameraOptions& options, const Pose2D& robot_pose) {
+  const double yaw = robot_pose.theta_rad + (options.side == "right" ? -kPi / 2 : kPi / 2);
+  CameraFrame frame;
+  frame.position = robot_pose.TransformPoint({options.mount_x_m, options.mount_y_m});
+  frame.forward = {std::cos(yaw), std::sin(yaw)};
+  frame.right = {frame.forward.y, -frame.forward.x};
+  return frame;
+}
+
+// Brightness falls off slowly with distance (ceiling lights are spread along the corridor).
+double DistanceShade(double distance_m) { return std::max(0.55, 1.0 / (1.0 + 0.03 * distance_m)); }
+
+cv::Vec3b Bgr(const ColorRgb& c, double gain) {
+  return {cv::saturate_cast<uchar>(c[2] * gain), cv::saturate_cast<uchar>(c[1] * gain),
+          cv::saturate_cast<uchar>(c[0] * gain)};
+}
+
+int HersheyFace(SignFont font) {
+  switch (font) {
+    case SignFont::kDuplex: return cv::FONT_HERSHEY_DUPLEX;
+    case SignFont::kComplex: return cv::FONT_HERSHEY_COMPLEX;
+    case SignFont::kTriplex: return cv::FONT_HERSHEY_TRIPLEX;
+    case SignFont::kSimplex: break;
+  }
+  return cv::FONT_HERSHEY_SIMPLEX;
+}
+
+std::vector<std::string> SplitLines(const std::string& text) {
+  std::vector<std::string> lines(1);
+  for (char c : text) {
+    if (c == '\n') lines.emplace_back(); else lines.back() += c;
+  }
+  return lines;
+}
+
+// Draws a sign flat (filled background, thin border, text lines centred) and returns its mip pyramid.
+std::vector<cv::Mat> MakeSignPyramid(const TextSign& sign, std::size_t index) {
+  if (!(sign.width_m > 0.0) || !(sign.height_m > 0.0)) {
+    throw std::invalid_argument("CameraRenderer: world signs[" + std::to_string(index) + "] ('" + sign.text +
+                                "'): width_m and height_m must be > 0");
+  }
+  const double px_per_m = std::min(kSignPxPerM, kMaxSignTexturePx / std::max(sign.width_m, sign.height_m));
+  const int w = std::max(8, static_cast<int>(std::lround(sign.width_m * px_per_m)));
+  const int h = std::max(8, static_cast<int>(std::lround(sign.height_m * px_per_m)));
+  const cv::Scalar fg(sign.foreground[2], sign.foreground[1], sign.foreground[0]);
+  cv::Mat texture(h, w, CV_8UC3, cv::Scalar(sign.background[2], sign.background[1], sign.background[0]));
+  const int border_px = std::max(1, static_cast<int>(std::lround(0.004 * px_per_m)));
+  cv::rectangle(texture, cv::Rect(0, 0, w, h), fg, 2 * border_px);  // centred on the edge: half shows
+
+  const std::vector<std::string> lines = SplitLines(sign.text);
+  const int face = HersheyFace(sign.font);
+  int baseline = 0;
+  const double cap_unit = cv::getTextSize("H", face, 1.0, 1, &baseline).height;
+  double width_unit = 0.0;
+  for (const std::string& line : lines) {
+    width_unit = std::max<double>(width_unit, cv::getTextSize(line, face, 1.0, 1, &baseline).width);
+  }
+  if (width_unit > 0.0) {
+    const int n = static_cast<int>(lines.size());
+    const double block_units = n + 0.6 * (n - 1);  // line gap: 0.6 cap heights
+    const double fill = n == 1 ? 0.33 : 0.6;  // 4 cm digits on a 12 cm plate
+    double scale = std::min(fill * h / (cap_unit * block_units), 0.84 * w / width_unit);
+    const int thickness = std::max(1, static_cast<int>(std::lround(0.13 * cap_unit * scale)));
+    for (const std::string& line : lines) {  // thick strokes widen the text: shrink to fit
+      const double line_w = cv::getTextSize(line, face, scale, thickness, &baseline).width;
+      if (line_w > 0.9 * w) scale *= 0.9 * w / line_w;
+    }
+    const double cap = cap_unit * scale;
+    const double top = (h - cap * block_units) / 2.0;
+    for (int i = 0; i < n; ++i) {
+      const int line_w = cv::getTextSize(lines[i], face, scale, thickness, &baseline).width;
+      const cv::Point origin((w - line_w) / 2, static_cast<int>(std::lround(top + cap * (1.6 * i + 1.0))));
+      cv::putText(texture, lines[i], origin, face, scale, fg, thickness, cv::LINE_AA);
+    }
+  }
+  std::vector<cv::Mat> levels{texture};
+  while (std::min(levels.back().cols, levels.back().rows) >= 4 && levels.size() < 12) {
+    cv::Mat smaller;
+    cv::pyrDown(levels.back(), smaller);
+    levels.push_back(smaller);
+  }
+  return levels;
+}
+
+// table[i] = 16 · stddev · Φ⁻¹((i + 0.5) / n): uniform random indices into it draw N(0, stddev²) in
+// 1/16 grey levels, quantised to n levels (tails cut at ±3.5σ for n = 4096).
+std::vector<std::int16_t> GaussianQuantiles(int n, double stddev) {
+  const auto cdf = [](double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); };
+  const double step = 1e-3;
+  std::vector<std::int16_t> table(n);
+  double x0 = -8.0, f0 = cdf(x0);
+  for (int i = 0; i < n; ++i) {
+    const double p = (i + 0.5) / n;
+    double x1 = x0 + step, f1 = cdf(x1);
+    while (f1 < p) {
+      x0 = x1;
+      f0 = f1;
+      x1 += step;
+      f1 = cdf(x1);
+    }
+    const double value = 16.0 * stddev * (x0 + (p - f0) / (f1 - f0) * step);
+    table[i] = static_cast<std::int16_t>(std::lround(std::clamp(value, -32000.0, 32000.0)));
+  }
+  return table;
+}
+
+// SplitMix64 (Steele, Lea, Flood 2014): a fast 64-bit generator for per-pixel noise, seeded per frame.
+struct SplitMix64 {
+  std::uint64_t state;
+  std::uint64_t operator()() {
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+};
+
+// 1-D kernel: a Gaussian (lens blur) convolved with a box of `box_px` pixels (motion during exposure).
+cv::Mat BlurKernel(double sigma_px, double box_px) {
+  std::vector<double> gauss{1.0}, box{1.0};
+  if (sigma_px > 0.05) {
+    const int r = static_cast<int>(std::ceil(3.0 * sigma_px));
+    gauss.assign(2 * r + 1, 0.0);
+    for (int t = -r; t <= r; ++t) gauss[t + r] = std::exp(-0.5 * t * t / (sigma_px * sigma_px));
+  }
+  if (box_px > 1.0) {  // tap t covers [t - 0.5, t + 0.5]; its weight is the overlap with the box
+    const int r = static_cast<int>(std::ceil(box_px / 2.0 - 0.5));
+    box.assign(2 * r + 1, 0.0);
+    for (int t = -r; t <= r; ++t) {
+      box[t + r] = std::max(0.0, std::min(t + 0.5, box_px / 2) - std::max(t - 0.5, -box_px / 2));
+    }
+  }
+  cv::Mat kernel = cv::Mat::zeros(1, static_cast<int>(gauss.size() + box.size() - 1), CV_32F);
+  for (std::size_t i = 0; i < gauss.size(); ++i) {
+    for (std::size_t j = 0; j < box.size(); ++j) kernel.at<float>(0, i + j) += gauss[i] * box[j];
+  }
+  return kernel / cv::sum(kernel)[0];
+}
+
+// Draws a sign into column rows [first, last), seen at `u_m` metres from its left edge (as read). Row r
+// sees `(r - top_row) / rows_per_m` metres below the sign's top. The mip level matches the vertical
+// pixel footprint; `footprint_u_m` wider than that is averaged with extra samples (anisotropy). Edge
+// pixels are blended with what is behind by their coverage (`coverage_u` across, computed here along).
+void SampleSignColumn(const std::vector<cv::Mat>& levels, const TextSign& sign, double u_m,
+                      double footprint_u_m, double coverage_u, double top_row, double rows_per_m,
+                      double shade, int first, int last, cv::Vec3b* column) {
+  const double footprint_v_m = 1.0 / rows_per_m;
+  const double texels_per_px = footprint_v_m * levels[0].rows / sign.height_m;
+  const int level = std::clamp(static_cast<int>(std::floor(std::log2(std::max(texels_per_px, 1.0)))), 0,
+                               static_cast<int>(levels.size()) - 1);
+  const cv::Mat& tex = levels[level];
+  const double px_u = tex.cols / sign.width_m, px_v = tex.rows / sign.height_m;
+  const int samples = std::clamp(static_cast<int>(std::lround(footprint_u_m / footprint_v_m)), 1, 8);
+  std::array<int, 8> x0{}, x1{};
+  std::array<float, 8> wx{};
+  for (int i = 0; i < samples; ++i) {
+    const double tx = (u_m + footprint_u_m * ((i + 0.5) / samples - 0.5)) * px_u - 0.5;
+    const double fl = std::floor(tx);
+    wx[i] = static_cast<float>(tx - fl);
+    x0[i] = std::clamp(static_cast<int>(fl), 0, tex.cols - 1);
+    x1[i] = std::clamp(static_cast<int>(fl) + 1, 0, tex.cols - 1);
+  }
+  const float gain = static_cast<float>(shade / samples);
+  const double bottom_row = top_row + sign.height_m * rows_per_m;
+  for (int r = first; r < last; ++r) {
+    const double coverage_v = std::min(r + 0.5, bottom_row) - std::max(r - 0.5, top_row);
+    const float alpha = static_cast<float>(coverage_u * std::clamp(coverage_v, 0.0, 1.0));
+    const double ty = (r - top_row) / rows_per_m * px_v - 0.5;
+    const double fl = std::floor(ty);
+    const float wy = static_cast<float>(ty - fl);
+    const cv::Vec3b* row0 = tex.ptr<cv::Vec3b>(std::clamp(static_cast<int>(fl), 0, tex.rows - 1));
+    const cv::Vec3b* row1 = tex.ptr<cv::Vec3b>(std::clamp(static_cast<int>(fl) + 1, 0, tex.rows - 1));
+    float acc[3] = {0.f, 0.f, 0.f};
+    for (int i = 0; i < samples; ++i) {
+      for (int ch = 0; ch < 3; ++ch) {
+        const float top = row0[x0[i]][ch] + wx[i] * (row0[x1[i]][ch] - row0[x0[i]][ch]);
+        const float bottom = row1[x0[i]][ch] + wx[i] * (row1[x1[i]][ch] - row1[x0[i]][ch]);
+        acc[ch] += top + wy * (bottom - top);
+      }
+    }
+    for (int ch = 0; ch < 3; ++ch) {
+      column[r][ch] = cv::saturate_cast<uchar>(alpha * acc[ch] * gain + (1.f - alpha) * column[r][ch]);
+    }
+  }
+}
+
+}  // namespace
+
+// One surface crossed by a column's ray.
+struct CameraRenderer::Hit {
+  double depth_m = 0.0;      // along the optical axis
+  double s = 0.0;            // position on the surface segment: 0 at a, 1 at b
+  double wall_step_m = 0.0;  // how far the hit moves along the surface from one column to the next
+  double shade = 1.0;        // brightness factor from distance and incidence
+  int surface = -1;
+};
+
+CameraIntrinsics IntrinsicsFromOptions(const CameraOptions& options) {
+  CameraIntrinsics k;
+  k.width_px = options.width_px;
+  k.height_px = options.height_px;
+  k.fx_px = 0.5 * options.width_px / std::tan(0.5 * options.horizontal_fov_deg * kPi / 180.0);
+  k.fy_px = k.fx_px;
+  k.cx_px = 0.5 * (options.width_px - 1);
+  k.cy_px = 0.5 * (options.height_px - 1);
+  return k;
+}
+
+CameraRenderer::CameraRenderer(const World& world, const CameraOptions& options)
+    : world_(world), options_(options), intrinsics_(IntrinsicsFromOptions(options)) {
+  const auto fail = [](const std::string& what) { throw std::invalid_argument("CameraRenderer: " + what); };
+  const int min_side = std::min(options.width_px, options.height_px);
+  if (min_side < 16 || std::max(options.width_px, options.height_px) > 8192) {
+    fail("camera width_px and height_px must be in [16, 8192]");
+  }
+  if (!(options.horizontal_fov_deg > 1.0 && options.horizontal_fov_deg < 170.0)) {
+    fail("camera horizontal_fov_deg must be in (1, 170)");
+  }
+  if (options.side != "left" && options.side != "right") {
+    fail("camera side must be 'left' or 'right', got '" + options.side + "'");
+  }
+  if (!(options.lens_blur_sigma_px >= 0.0) || !(options.exposure_s >= 0.0) ||
+      !(options.pixel_noise_stddev >= 0.0) || !(options.lighting_gain_stddev >= 0.0)) {
+    fail("camera lens_blur_sigma_px, exposure_s, pixel_noise_stddev, lighting_gain_stddev must be >= 0");
+  }
+  pitch_rad_ = options.pitch_deg * kPi / 180.0;
+
+  // Output pixel → unpitched pixel: X_unpitched = Rᵀ·K⁻¹·(u, v, 1) with R the pitch rotation.
+  const CameraIntrinsics& k = intrinsics_;
+  const double cp = std::cos(pitch_rad_), sp = std::sin(pitch_rad_);
+  cv::Mat xs(k.height_px, k.width_px, CV_32F), ys(k.height_px, k.width_px, CV_32F);
+  for (int v = 0; v < k.height_px; ++v) {
+    const double y_p = (v - k.cy_px) / k.fy_px;
+    const double y_u = cp * y_p - sp, z_u = sp * y_p + cp;
+    if (z_u < 0.05) fail("camera pitch_deg " + std::to_string(options.pitch_deg) + " is too steep");
+    for (int u = 0; u < k.width_px; ++u) {
+      xs.at<float>(v, u) = static_cast<float>((u - k.cx_px) / z_u);
+      ys.at<float>(v, u) = static_cast<float>(k.fy_px * y_u / z_u);
+    }
+  }
+  double x_min, x_max, y_min, y_max;
+  cv::minMaxLoc(xs, &x_min, &x_max);
+  cv::minMaxLoc(ys, &y_min, &y_max);
+  const int col0 = static_cast<int>(std::floor(x_min)) - 2, row0 = static_cast<int>(std::floor(y_min)) - 2;
+  unpitched_cols_ = static_cast<int>(std::ceil(x_max)) + 3 - col0;
+  unpitched_rows_ = static_cast<int>(std::ceil(y_max)) + 3 - row0;
+  unpitched_cx_px_ = -col0;
+  unpitched_cy_px_ = -row0;
+  // The unpitched image is stored transposed (a column per row), so remap's x is the unpitched row.
+  cv::convertMaps(ys - row0, xs - col0, pitch_map1_, pitch_map2_, CV_16SC2);
+
+  background_column_.create(1, unpitched_rows_, CV_8UC3);
+  const double h = options.mount_height_m, above = std::max(world.wall_height_m - h, 0.05);
+  for (int r = 0; r < unpitched_rows_; ++r) {
+    const double dy = r - unpitched_cy_px_;
+    const bool floor = dy > -0.5;
+    const double distance = floor ? h * k.fy_px / std::max(dy, 0.5) : above * k.fy_px / -dy;
+    background_column_.at<cv::Vec3b>(0, r) =
+        Bgr(floor ? world.floor_color : world.ceiling_color, DistanceShade(distance));
+  }
+
+  wall_doors_.assign(world.walls.size(), {});
+  wall_signs_.assign(world.walls.size(), {});
+  const int num_walls = static_cast<int>(world.walls.size());
+  for (std::size_t i = 0; i < world.doors.size(); ++i) {
+    const int w = world.doors[i].wall_index;
+    if (w < 0 || w >= num_walls) fail("world doors[" + std::to_string(i) + "].wall_index out of range");
+    if (!world.doors[i].open) wall_doors_[w].push_back(static_cast<int>(i));
+  }
+  for (std::size_t i = 0; i < world.signs.size(); ++i) {
+    const int w = world.signs[i].wall_index;
+    if (w < 0 || w >= num_walls) fail("world signs[" + std::to_string(i) + "].wall_index out of range");
+    wall_signs_[w].push_back(static_cast<int>(i));
+    sign_textures_.push_back({MakeSignPyramid(world.signs[i], i)});
+  }
+  for (std::size_t i = 0; i < world.surfaces.size(); ++i) {
+    if (world.surfaces[i].wall_index >= num_walls) {
+      fail("world surfaces[" + std::to_string(i) + "].wall_index out of range");
+    }
+  }
+  if (options.pixel_noise_stddev > 0.0) {
+    noise_table_ = GaussianQuantiles(kNoiseTableSize, options.pixel_noise_stddev);
+  }
+}
+
+double CameraRenderer::RenderUnpitchedTransposed(const Pose2D& robot_pose, cv::Mat* transposed) const {
+  const CameraFrame cam = FrameAt(options_, robot_pose);
+  const int cols = unpitched_cols_, rows = unpitched_rows_;
+  const double fx = intrinsics_.fx_px, cx = unpitched_cx_px_;
+  transposed->create(cols, rows, CV_8UC3);
+
+  // Collect, per column, the nearest surfaces its ray crosses (sorted by depth).
+  std::vector<Hit> hits(static_cast<std::size_t>(cols) * kMaxHitsPerColumn);
+  std::vector<int> hit_count(cols, 0);
+  for (std::size_t si = 0; si < world_.surfaces.size(); ++si) {
+    const Surface& surface = world_.surfaces[si];
+    const Vec2 a = surface.segment.a - cam.position, b = surface.segment.b - cam.position;
+    const double xa = Dot(a, cam.right), za = Dot(a, cam.forward);
+    const double xb = Dot(b, cam.right), zb = Dot(b, cam.forward);
+    if (za < kNearDepthM && zb < kNearDepthM) continue;
+    const double dx = xb - xa, dz = zb - za, length = std::hypot(dx, dz);
+    if (length <= 0.0) continue;
+    // Columns spanned by the part in front of the near plane.
+    const auto clipped_column = [&](double x, double z, double x_other, double z_other) {
+      if (z < kNearDepthM) {
+        x += (kNearDepthM - z) / (z_other - z) * (x_other - x);
+        z = kNearDepthM;
+      }
+      return std::clamp(cx + fx * x / z, -1.0, static_cast<double>(cols));
+    };
+    const double ua = clipped_column(xa, za, xb, zb), ub = clipped_column(xb, zb, xa, za);
+    const int c0 = std::max(0, static_cast<int>(std::ceil(std::min(ua, ub))));
+    const int c1 = std::min(cols - 1, static_cast<int>(std::floor(std::max(ua, ub))));
+    for (int c = c0; c <= c1; ++c) {
+      const double xn = (c - cx) / fx;  // the column's ray: (x, z) = depth · (xn, 1)
+      const double denom = dx - xn * dz;
+      if (std::fabs(denom) < 1e-12) continue;
+      const double s = (xn * za - xa) / denom;
+      const double depth = za + s * dz;
+      if (s < -1e-9 || s > 1.0 + 1e-9 || depth < kNearDepthM) continue;
+      const double xn1 = xn + 1.0 / fx, denom1 = dx - xn1 * dz;
+      const double s1 = std::fabs(denom1) < 1e-12 ? s + 1.0 : (xn1 * za - xa) / denom1;
+      const double ray_norm = std::sqrt(1.0 + xn * xn);
+      const double cos_incidence = std::fabs(dx - dz * xn) / (length * ray_norm);
+      const Hit hit{depth, std::clamp(s, 0.0, 1.0), std::min(std::fabs(s1 - s) * length, 1.0),
+                    DistanceShade(depth * ray_norm) * (0.8 + 0.2 * cos_incidence), static_cast<int>(si)};
+      Hit* list = &hits[static_cast<std::size_t>(c) * kMaxHitsPerColumn];
+      int& n = hit_count[c];
+      if (n == kMaxHitsPerColumn && depth >= list[n - 1].depth_m) continue;
+      int i = std::min(n, kMaxHitsPerColumn - 1);
+      for (; i > 0 && list[i - 1].depth_m > depth; --i) list[i] = list[i - 1];
+      list[i] = hit;
+      n = std::min(n + 1, kMaxHitsPerColumn);
+    }
+  }
+
+  // Fill each column near to far: a surface paints only the rows no nearer surface covered.
+  const double fy = intrinsics_.fy_px, cy = unpitched_cy_px_, h = options_.mount_height_m;
+  const int center_col = static_cast<int>(std::lround(cx));
+  double center_depth_m = std::numeric_limits<double>::infinity();
+  for (int c = 0; c < cols; ++c) {
+    cv::Vec3b* column = transposed->ptr<cv::Vec3b>(c);
+    std::memcpy(transposed->ptr(c), background_column_.ptr(), static_cast<std::size_t>(rows) * 3);
+    std::array<std::pair<int, int>, kMaxHitsPerColumn + 2> open, next;
+    int n_open = 1;
+    open[0] = {0, rows};
+    const Hit* list = &hits[static_cast<std::size_t>(c) * kMaxHitsPerColumn];
+    if (c == center_col && hit_count[c] > 0) center_depth_m = list[0].depth_m;
+    for (int k = 0; k < hit_count[c] && n_open > 0; ++k) {
+      const Surface& surface = world_.surfaces[list[k].surface];
+      const double scale = fy / list[k].depth_m;
+      const auto row_of = [&](double z) {
+        return static_cast<int>(std::clamp(std::ceil(cy + (h - z) * scale), 0.0, 1.0 * rows));
+      };
+      const int r0 = row_of(surface.z_max_m), r1 = row_of(surface.z_min_m);
+      if (r0 >= r1) continue;
+      int n_next = 0;
+      for (int i = 0; i < n_open; ++i) {
+        const auto [a, b] = open[i];
+        const int pa = std::max(a, r0), pb = std::min(b, r1);
+        if (pa >= pb) {
+          next[n_next++] = open[i];
+          continue;
+        }
+        PaintHit(list[k], scale, cam.position, pa, pb, column);
+        if (a < pa) next[n_next++] = {a, pa};
+        if (pb < b) next[n_next++] = {pb, b};
+      }
+      open = next;
+      n_open = n_next;
+    }
+  }
+  return center_depth_m;
+}
+
+void CameraRenderer::PaintHit(const Hit& hit, double depth_scale, const Vec2& camera_xy, int row_begin,
+                              int row_end, cv::Vec3b* column) const {
+  const Surface& surface = world_.surfaces[hit.surface];
+  std::fill(column + row_begin, column + row_end, Bgr(surface.color, hit.shade));
+  if (surface.wall_index < 0) return;
+
+  const double cy = unpitched_cy_px_, h = options_.mount_height_m;
+  const auto row_of = [&](double z) { return cy + (h - z) * depth_scale; };  // row seeing height z
+  int first = 0, last = 0;  // rows whose centres see heights in [z0, z1], within the span
+  const auto rows_for = [&](double z0, double z1) {
+    first = static_cast<int>(std::clamp(std::ceil(row_of(z1)), 1.0 * row_begin, 1.0 * row_end));
+    last = static_cast<int>(std::clamp(std::ceil(row_of(z0)), 1.0 * row_begin, 1.0 * row_end));
+    return first < last;
+  };
+  const Wall& wall = world_.walls[surface.wall_index];
+  const Vec2 along_wall = wall.segment.b - wall.segment.a;
+  if (!(Norm(along_wall) > 0.0)) return;
+  const Vec2 point = surface.segment.a + hit.s * (surface.segment.b - surface.segment.a);
+  const double offset = Dot(point - wall.segment.a, along_wall) / Norm(along_wall);
+
+  for (int d : wall_doors_[surface.wall_index]) {  // closed doors: a panel with a darker frame
+    const Door& door = world_.doors[d];
+    const double across = std::fabs(offset - door.offset_m);
+    if (across > door.width_m / 2) continue;
+    const cv::Vec3b panel = Bgr(door.color, hit.shade), frame = Bgr(door.color, 0.55 * hit.shade);
+    const bool side_frame = across > door.width_m / 2 - kDoorFrameM;
+    if (rows_for(0.0, door.height_m)) std::fill(column + first, column + last, side_frame ? frame : panel);
+    if (!side_frame && rows_for(door.height_m - kDoorFrameM, door.height_m)) {
+      std::fill(column + first, column + last, frame);
+    }
+  }
+  const bool camera_on_left = Cross(along_wall, camera_xy - wall.segment.a) > 0.0;
+  for (int si : wall_signs_[surface.wall_index]) {  // signs only face their corridor side
+    const TextSign& sign = world_.signs[si];
+    const double along = offset - sign.offset_m, half_width = sign.width_m / 2, step = hit.wall_step_m;
+    if (sign.corridor_side_left != camera_on_left || std::fabs(along) > half_width + step / 2) continue;
+    const double coverage_u =
+        std::clamp((std::min(along + step / 2, half_width) - std::max(along - step / 2, -half_width)) /
+                       std::max(step, 1e-9), 0.0, 1.0);
+    const double top = sign.center_height_m + sign.height_m / 2;
+    const double top_row = row_of(top), bottom_row = row_of(top - sign.height_m);
+    const int first_row = std::max(row_begin, static_cast<int>(std::ceil(top_row - 0.5)));
+    const int last_row = std::min(row_end, static_cast<int>(std::floor(bottom_row + 0.5)) + 1);
+    if (first_row >= last_row) continue;
+    // Seen from a wall's left side, wall offsets grow to the viewer's left.
+    const double u_m = sign.corridor_side_left ? half_width - along : half_width + along;
+    SampleSignColumn(sign_textures_[si].levels, sign, u_m, step, coverage_u, top_row, depth_scale,
+                     hit.shade, first_row, last_row, column);
+  }
+}
+
+cv::Mat CameraRenderer::RenderClean(const Pose2D& robot_pose) const {
+  cv::Mat transposed, image;
+  RenderUnpitchedTransposed(robot_pose, &transposed);
+  cv::remap(transposed, image, pitch_map1_, pitch_map2_, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  return image;
+}
+
+cv::Mat CameraRenderer::Render(const Pose2D& robot_pose, double speed_mps, double yaw_rate_rps,
+                               std::mt19937_64& rng) const {
+  cv::Mat transposed, image;
+  const double center_depth_m = RenderUnpitchedTransposed(robot_pose, &transposed);
+  cv::remap(transposed, image, pitch_map1_, pitch_map2_, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  Degrade(center_depth_m, speed_mps, yaw_rate_rps, rng, &image);
+  return image;
+}
+
+void CameraRenderer::Degrade(double center_depth_m, double speed_mps, double yaw_rate_rps,
+                             std::mt19937_64& rng, cv::Mat* image) const {
+  // Image-plane speed at the centre: translation sweeps the scene against the camera's x axis (the
+  // left camera's x axis is the robot's forward direction), turning left sweeps it to the right.
+  const double fx = intrinsics_.fx_px, side = options_.side == "left" ? -1.0 : 1.0;
+  const double translation_px_s =
+      std::isfinite(center_depth_m) ? side * speed_mps * fx / center_depth_m : 0.0;
+  const double motion_px = std::fabs(translation_px_s + yaw_rate_rps * fx) * options_.exposure_s;
+  const cv::Mat kernel_x = BlurKernel(options_.lens_blur_sigma_px, motion_px);
+  const cv::Mat kernel_y = BlurKernel(options_.lens_blur_sigma_px, 0.0);
+  if (kernel_x.cols > 1 || kernel_y.cols > 1) {
+    cv::sepFilter2D(*image, *image, -1, kernel_x, kernel_y, cv::Point(-1, -1), 0.0, cv::BORDER_REFLECT_101);
+  }
+
+  double gain = 1.0;
+  if (options_.lighting_gain_stddev > 0.0) {
+    gain = std::max(0.2, std::normal_distribution<double>(1.0, options_.lighting_gain_stddev)(rng));
+  }
+  // Fixed point: out = (in · G + noise · 256 + 2048) >> 12 with G = gain · 4096, noise in 1/16 levels.
+  const int width = image->cols, row_values = 3 * width;
+  std::vector<std::int32_t> channel_gain(row_values);
+  for (int u = 0; u < width; ++u) {
+    const double g = gain * (1.0 + options_.lighting_gradient * ((u + 0.5) / width - 0.5));
+    channel_gain[3 * u] = channel_gain[3 * u + 1] = channel_gain[3 * u + 2] =
+        static_cast<std::int32_t>(std::lround(std::clamp(g, 0.0, 8.0) * 4096.0));
+  }
+  SplitMix64 fast_rng{rng()};  // one draw from `rng` seeds the per-pixel generator
+  std::vector<std::uint64_t> words((row_values + 3) / 4);
+  const auto* index = reinterpret_cast<const std::uint16_t*>(words.data());
+  for (int r = 0; r < image->rows; ++r) {
+    uchar* p = image->ptr<uchar>(r);
+    if (noise_table_.empty()) {
+      for (int i = 0; i < row_values; ++i) {
+        p[i] = cv::saturate_cast<uchar>((p[i] * channel_gain[i] + 2048) >> 12);
+      }
+      continue;
+    }
+    for (std::uint64_t& w : words) w = fast_rng();
+    for (int i = 0; i < row_values; ++i) {
+      const int noise = noise_table_[index[i] & (kNoiseTableSize - 1)];
+      p[i] = cv::saturate_cast<uchar>((p[i] * channel_gain[i] + noise * 256 + 2048) >> 12);
+    }
+  }
+}
+
+bool CameraRenderer::Project(const Pose2D& robot_pose, const Point3& world_point, cv::Point2d* pixel) const {
+  const CameraFrame cam = FrameAt(options_, robot_pose);
+  const Vec2 d = Vec2{world_point.x, world_point.y} - cam.position;
+  const double forward = Dot(d, cam.forward), right = Dot(d, cam.right);
+  const double up = world_point.z - options_.mount_height_m;
+  const double cp = std::cos(pitch_rad_), sp = std::sin(pitch_rad_);
+  const double z = cp * forward + sp * up, y = sp * forward - cp * up;  // pitched optical frame
+  if (z <= 1e-9) return false;
+  if (pixel != nullptr) {
+    pixel->x = intrinsics_.cx_px + intrinsics_.fx_px * right / z;
+    pixel->y = intrinsics_.cy_px + intrinsics_.fy_px * y / z;
+  }
+  return true;
+}
+
+void CameraRenderer::MountPose(double* x, double* y, double* z, double* yaw_rad, double* pitch_rad) const {
+  *x = options_.mount_x_m;
+  *y = options_.mount_y_m;
+  *z = options_.mount_height_m;
+  *yaw_rad = options_.side == "right" ? -kPi / 2 : kPi / 2;
+  *pitch_rad = -pitch_rad_;
+}
+
+}  // namespace doorplate_localization

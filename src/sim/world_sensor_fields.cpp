@@ -1,0 +1,75 @@
+#include "world_sensor_fields.h"
+
+#include <cmath>
+
+namespace doorplate_localization {
+namespace {
+
+void ParseLaser(const YamlField& f, LaserOptions* o) {
+  f.RequireOnlyKeys({"num_beams", "angle_min_rad", "min_range_m", "max_range_m", "range_noise_stddev_m",
+                     "dropout_probability", "rate_hz", "mount_x_m", "mount_y_m", "mount_yaw_rad", "mount_height_m"});
+  f.Get("num_beams", &o->num_beams);
+  if (o->num_beams < 3 || o->num_beams > 100000) f.Child("num_beams").Fail("must be in 3..100000");
+  f.Get("angle_min_rad", &o->angle_min_rad);
+  o->min_range_m = f.NonNegative("min_range_m", o->min_range_m);
+  o->max_range_m = f.Positive("max_range_m", o->max_range_m);
+  if (o->min_range_m >= o->max_range_m) f.Fail("min_range_m must be < max_range_m");
+  o->range_noise_stddev_m = f.NonNegative("range_noise_stddev_m", o->range_noise_stddev_m);
+  o->dropout_probability = f.NonNegative("dropout_probability", o->dropout_probability);
+  if (o->dropout_probability > 1.0) f.Child("dropout_probability").Fail("must be in [0, 1]");
+  o->rate_hz = f.Positive("rate_hz", o->rate_hz);
+  f.Get("mount_x_m", &o->mount_x_m);
+  f.Get("mount_y_m", &o->mount_y_m);
+  f.Get("mount_yaw_rad", &o->mount_yaw_rad);
+  o->mount_height_m = f.NonNegative("mount_height_m", o->mount_height_m);
+}
+
+void ParseOdometry(const YamlField& f, OdometryNoiseOptions* o) {
+  f.RequireOnlyKeys({"alpha1_rad2_per_rad", "alpha2_rad2_per_m", "alpha3_m2_per_m", "alpha4_m2_per_rad",
+                     "scale_error", "heading_drift_rad_per_m", "rate_hz"});
+  o->alpha1_rad2_per_rad = f.NonNegative("alpha1_rad2_per_rad", o->alpha1_rad2_per_rad);
+  o->alpha2_rad2_per_m = f.NonNegative("alpha2_rad2_per_m", o->alpha2_rad2_per_m);
+  o->alpha3_m2_per_m = f.NonNegative("alpha3_m2_per_m", o->alpha3_m2_per_m);
+  o->alpha4_m2_per_rad = f.NonNegative("alpha4_m2_per_rad", o->alpha4_m2_per_rad);
+  f.Get("scale_error", &o->scale_error);
+  if (std::fabs(o->scale_error) >= 0.5) f.Child("scale_error").Fail("must be in (-0.5, 0.5)");
+  f.Get("heading_drift_rad_per_m", &o->heading_drift_rad_per_m);
+  o->rate_hz = f.Positive("rate_hz", o->rate_hz);
+}
+
+void ParseCamera(const YamlField& f, CameraOptions* o) {
+  f.RequireOnlyKeys({"width_px", "height_px", "horizontal_fov_deg", "side", "mount_x_m", "mount_y_m",
+                     "mount_height_m", "pitch_deg", "rate_hz", "lens_blur_sigma_px", "exposure_s",
+                     "pixel_noise_stddev", "lighting_gain_stddev", "lighting_gradient"});
+  f.Get("width_px", &o->width_px);
+  f.Get("height_px", &o->height_px);
+  if (o->width_px < 16 || o->height_px < 16 || o->width_px > 8192 || o->height_px > 8192) {
+    f.Fail("width_px and height_px must be in 16..8192");
+  }
+  o->horizontal_fov_deg = f.Positive("horizontal_fov_deg", o->horizontal_fov_deg);
+  if (o->horizontal_fov_deg >= 170) f.Child("horizontal_fov_deg").Fail("must be < 170");
+  f.Get("side", &o->side);
+  if (o->side != "left" && o->side != "right") f.Child("side").Fail("must be 'left' or 'right'");
+  f.Get("mount_x_m", &o->mount_x_m);
+  f.Get("mount_y_m", &o->mount_y_m);
+  o->mount_height_m = f.Positive("mount_height_m", o->mount_height_m);
+  f.Get("pitch_deg", &o->pitch_deg);
+  if (std::fabs(o->pitch_deg) > 45) f.Child("pitch_deg").Fail("must be within ±45°");
+  o->rate_hz = f.Positive("rate_hz", o->rate_hz);
+  o->lens_blur_sigma_px = f.NonNegative("lens_blur_sigma_px", o->lens_blur_sigma_px);
+  o->exposure_s = f.NonNegative("exposure_s", o->exposure_s);
+  o->pixel_noise_stddev = f.NonNegative("pixel_noise_stddev", o->pixel_noise_stddev);
+  o->lighting_gain_stddev = f.NonNegative("lighting_gain_stddev", o->lighting_gain_stddev);
+  o->lighting_gradient = f.NonNegative("lighting_gradient", o->lighting_gradient);
+}
+
+}  // namespace
+
+void ParseSensorOptions(const YamlField& sensors, SensorOptions* options) {
+  sensors.RequireOnlyKeys({"laser", "odometry", "camera"});
+  if (sensors.Has("laser")) ParseLaser(sensors.Child("laser"), &options->laser);
+  if (sensors.Has("odometry")) ParseOdometry(sensors.Child("odometry"), &options->odometry);
+  if (sensors.Has("camera")) ParseCamera(sensors.Child("camera"), &options->camera);
+}
+
+}  // namespace doorplate_localization

@@ -1,0 +1,185 @@
+// Checker node of corridor_sim_nodelet.test: the sim nodelet, loaded through pluginlib by a nodelet manager,
+// publishes scan, odom, tf, camera images on demand and ground truth that moves on cmd_vel. Every wait is on
+// a condition with a wall-clock timeout. Also checks LoadCorridorSimOptions against this node's parameters.
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <string>
+
+#include <geometry_msgs/Twist.h>
+#include <gtest/gtest.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/callback_queue.h>
+#include <ros/ros.h>
+#include <sensor_msgs/Image.h>
+#include <sensor_msgs/LaserScan.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include "corridor_sim_options.h"
+#include "doorplate_localization/sim/world_loader.h"
+
+namespace doorplate_localization {
+namespace {
+
+constexpr double kTimeoutS = 30.0;
+
+// Processes callbacks until `condition` holds (true) or kTimeoutS of wall time pass (false); `each` runs
+// before every check.
+bool WaitFor(const std::function<bool()>& condition, const std::function<void()>& each = [] {}) {
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(kTimeoutS);
+  while (ros::ok() && ros::WallTime::now() < deadline) {
+    each();
+    if (condition()) return true;
+    ros::getGlobalCallbackQueue()->callAvailable(ros::WallDuration(0.02));
+  }
+  return false;
+}
+
+std::string WorldParam() {
+  std::string world;
+  ros::NodeHandle("~").getParam("world", world);
+  return world;
+}
+
+TEST(CorridorSimNodelet, PublishesScanWithConfiguredBeamsSpanningTheCorridorWidth) {
+  const World world = LoadWorldFile(WorldParam());
+  double corridor_width_m = 0.0;
+  ASSERT_TRUE(ros::NodeHandle("~").getParam("corridor_width_m", corridor_width_m));
+  ros::NodeHandle nh;
+  sensor_msgs::LaserScan::ConstPtr scan;
+  ros::Subscriber sub = nh.subscribe<sensor_msgs::LaserScan>(
+      "scan", 1, [&](const sensor_msgs::LaserScan::ConstPtr& msg) { scan = msg; });
+  ASSERT_TRUE(WaitFor([&] { return scan != nullptr; }));
+
+  EXPECT_EQ("laser", scan->header.frame_id);
+  ASSERT_EQ(static_cast<size_t>(world.sensors.laser.num_beams), scan->ranges.size());
+  // Nearest echo within 20° of the robot's left and right (it starts parallel to the walls, 0.6 m from the
+  // end wall behind it, which these cones do not reach first): their sum is the corridor width.
+  const double cone_rad = 20.0 * M_PI / 180.0;
+  double left_m = std::numeric_limits<double>::infinity(), right_m = left_m;
+  for (size_t i = 0; i < scan->ranges.size(); ++i) {
+    const double angle = NormalizeAngle(scan->angle_min + i * scan->angle_increment + world.sensors.laser.mount_yaw_rad);
+    if (!std::isfinite(scan->ranges[i])) continue;
+    if (std::fabs(angle - M_PI / 2) < cone_rad) left_m = std::min(left_m, static_cast<double>(scan->ranges[i]));
+    if (std::fabs(angle + M_PI / 2) < cone_rad) right_m = std::min(right_m, static_cast<double>(scan->ranges[i]));
+  }
+  EXPECT_NEAR(corridor_width_m, left_m + right_m, 0.1) << "left " << left_m << " right " << right_m;
+}
+
+TEST(CorridorSimNodelet, PublishesOdometryAndTransformsForEverySensorFrame) {
+  ros::NodeHandle nh;
+  nav_msgs::Odometry::ConstPtr odom;
+  ros::Subscriber sub =
+      nh.subscribe<nav_msgs::Odometry>("odom", 1, [&](const nav_msgs::Odometry::ConstPtr& msg) { odom = msg; });
+  tf2_ros::Buffer buffer;
+  tf2_ros::TransformListener listener(buffer);
+  ASSERT_TRUE(WaitFor([&] { return odom != nullptr; }));
+  EXPECT_EQ("odom", odom->header.frame_id);
+  EXPECT_EQ("base_link", odom->child_frame_id);
+  EXPECT_GT(odom->header.stamp.toSec(), 0.0);  // sim time
+  for (const char* child : {"base_link", "laser", "camera_link", "camera_optical"}) {
+    EXPECT_TRUE(WaitFor([&] { return buffer.canTransform("odom", child, ros::Time(0)); })) << "odom -> " << child;
+  }
+  EXPECT_TRUE(buffer.canTransform("base_link", "laser", ros::Time(0)));
+}
+
+TEST(CorridorSimNodelet, RendersA640x480Bgr8ImageForASubscriber) {
+  ros::NodeHandle nh;
+  sensor_msgs::Image::ConstPtr image;
+  ros::Subscriber sub = nh.subscribe<sensor_msgs::Image>(
+      "camera/image_raw", 1, [&](const sensor_msgs::Image::ConstPtr& msg) { image = msg; });
+  ASSERT_TRUE(WaitFor([&] { return image != nullptr; }));
+  EXPECT_EQ(640u, image->width);
+  EXPECT_EQ(480u, image->height);
+  EXPECT_EQ("bgr8", image->encoding);
+  EXPECT_EQ("camera_optical", image->header.frame_id);
+  EXPECT_EQ(image->step * image->height, image->data.size());
+}
+
+TEST(CorridorSimNodelet, DrivesForwardOnCmdVelAndStopsWhenCommandsStop) {
+  ros::NodeHandle nh;
+  nav_msgs::Odometry::ConstPtr first, latest;
+  ros::Subscriber sub = nh.subscribe<nav_msgs::Odometry>("base_pose_ground_truth", 10,
+                                                         [&](const nav_msgs::Odometry::ConstPtr& msg) {
+                                                           if (!first) first = msg;
+                                                           latest = msg;
+                                                         });
+  ros::Publisher cmd = nh.advertise<geometry_msgs::Twist>("cmd_vel", 1);
+  ASSERT_TRUE(WaitFor([&] { return first != nullptr; }));
+  EXPECT_EQ("map", first->header.frame_id);
+  geometry_msgs::Twist forward;
+  forward.linear.x = 0.5;
+  const auto moved_m = [&] { return latest->pose.pose.position.x - first->pose.pose.position.x; };
+  EXPECT_TRUE(WaitFor([&] { return moved_m() > 0.3; }, [&] { cmd.publish(forward); })) << "moved " << moved_m();
+  // No more commands: after cmd_vel_timeout_s the robot stands still.
+  EXPECT_TRUE(WaitFor([&] { return latest->twist.twist.linear.x == 0.0; }));
+}
+
+// LoadCorridorSimOptions, on parameters set under this node's private namespace.
+TEST(LoadCorridorSimOptions, MissingWorldIsAnErrorNamingTheParameter) {
+  ros::NodeHandle nh("~no_world");
+  try {
+    LoadCorridorSimOptions(nh);
+    FAIL() << "no error";
+  } catch (const ParameterError& e) {
+    EXPECT_NE(std::string::npos, std::string(e.what()).find(nh.resolveName("world"))) << e.what();
+  }
+}
+
+TEST(LoadCorridorSimOptions, BrokenWorldFileIsAnErrorNamingParameterAndFile) {
+  const std::string path = testing::TempDir() + "/corridor_sim_broken_world.yaml";
+  std::ofstream(path) << "format_version: 1\nwalls: [unclosed\n";
+  ros::NodeHandle nh("~broken_world");
+  nh.setParam("world", path);
+  try {
+    LoadCorridorSimOptions(nh);
+    FAIL() << "no error";
+  } catch (const ParameterError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(std::string::npos, what.find(nh.resolveName("world"))) << what;
+    EXPECT_NE(std::string::npos, what.find(path)) << what;
+  }
+}
+
+TEST(LoadCorridorSimOptions, RejectsNegativeOrMistypedValuesNamingTheParameter) {
+  ros::NodeHandle nh("~bad_values");
+  nh.setParam("world", WorldParam());
+  nh.setParam("real_time_factor", -1.0);
+  EXPECT_THROW(LoadCorridorSimOptions(nh), ParameterError);
+  nh.setParam("real_time_factor", std::string("fast"));
+  try {
+    LoadCorridorSimOptions(nh);
+    FAIL() << "no error";
+  } catch (const ParameterError& e) {
+    EXPECT_NE(std::string::npos, std::string(e.what()).find(nh.resolveName("real_time_factor"))) << e.what();
+  }
+  nh.setParam("real_time_factor", 0.0);
+  nh.setParam("base_frame_id", std::string("odom"));  // clashes with odom_frame_id
+  EXPECT_THROW(LoadCorridorSimOptions(nh), ParameterError);
+}
+
+TEST(LoadCorridorSimOptions, ReadsValuesOverDefaults) {
+  ros::NodeHandle nh("~good_values");
+  nh.setParam("world", WorldParam());
+  nh.setParam("seed", 42);
+  nh.setParam("real_time_factor", 0.0);
+  nh.setParam("laser_frame_id", std::string("front_laser"));
+  const CorridorSimOptions options = LoadCorridorSimOptions(nh);
+  EXPECT_EQ(42u, options.simulator.seed);
+  EXPECT_EQ(0.0, options.real_time_factor);
+  EXPECT_EQ("front_laser", options.laser_frame_id);
+  EXPECT_EQ("odom", options.odom_frame_id);
+  EXPECT_TRUE(options.publish_clock);
+  EXPECT_FALSE(options.world.walls.empty());
+}
+
+}  // namespace
+}  // namespace doorplate_localization
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "corridor_sim_checker");
+  return RUN_ALL_TESTS();
+}

@@ -1,0 +1,92 @@
+#include "doorplate_localization/text/text_extractor.h"
+
+#include <stdexcept>
+
+#include <gtest/gtest.h>
+
+#include "text_fixtures.h"
+
+namespace doorplate_localization {
+namespace {
+
+// A frame of the robot driving past a plate: "214" at column `plate_x` in the band, a poster above it.
+cv::Mat Frame(int plate_x, std::uint32_t seed) {
+  cv::Mat image = test::MakeWall(150, 2.0, seed);
+  test::DrawPlate(image, "214", cv::Point(plate_x, test::kBandCenterY));
+  test::DrawPlate(image, "EXIT 12", cv::Point(plate_x - 150, 60));
+  return image;
+}
+
+std::vector<PlateReport> DrivePast(TextExtractor& extractor, int from_x, int to_x, int step) {
+  std::vector<PlateReport> reports;
+  double t = 0.0;
+  std::uint32_t seed = 1;
+  for (int x = from_x; step < 0 ? x >= to_x : x <= to_x; x += step, t += 0.1) {
+    for (const PlateReport& r : extractor.Process(Frame(x, seed++), t)) reports.push_back(r);
+  }
+  return reports;
+}
+
+TEST(TextExtractor, ReportsThePlateOnceWithAPositiveBearingWhenItPassesRightToLeft) {
+  TextExtractor extractor({});
+  const std::vector<PlateReport> reports = DrivePast(extractor, 560, 80, -40);
+  ASSERT_EQ(reports.size(), 1u);
+  EXPECT_EQ(reports[0].text, "214");
+  EXPECT_GT(reports[0].bearing_rad, 0.0);
+  EXPECT_LT(reports[0].bearing_rad, std::atan(40.0 / 554.0));  // the first frame past the centre
+  EXPECT_GE(reports[0].voted_frame_count, 5);
+  EXPECT_GT(reports[0].confidence, 0.7);
+}
+
+TEST(TextExtractor, ReportsANegativeBearingWhenThePlatePassesLeftToRight) {
+  TextExtractor extractor({});
+  const std::vector<PlateReport> reports = DrivePast(extractor, 100, 540, 50);
+  ASSERT_EQ(reports.size(), 1u);
+  EXPECT_EQ(reports[0].text, "214");
+  EXPECT_LT(reports[0].bearing_rad, 0.0);
+}
+
+TEST(TextExtractor, ExposesTheLastFramesObservations) {
+  TextExtractor extractor({});
+  extractor.Process(Frame(400, 3), 0.0);
+  ASSERT_EQ(extractor.last_observations().size(), 1u);  // the poster is outside the band
+  EXPECT_EQ(extractor.last_observations()[0].text, "214");
+}
+
+TEST(TextExtractor, RejectsEmptyAndFloatImagesAndKeepsWorking) {
+  TextExtractor extractor({});
+  EXPECT_THROW(extractor.Process(cv::Mat(), 0.0), std::invalid_argument);
+  EXPECT_THROW(extractor.Process(cv::Mat(480, 640, CV_32FC3, cv::Scalar(0.5, 0.5, 0.5)), 0.1),
+               std::invalid_argument);
+  EXPECT_NO_THROW(extractor.Process(test::Grey(Frame(400, 4)), 0.2));  // mono8 works too
+  EXPECT_EQ(extractor.last_observations().size(), 1u);
+}
+
+// Counts calls and answers "214": lets the test see how many boxes reach the OCR.
+class CountingOcr : public OcrEngine {
+ public:
+  explicit CountingOcr(int* calls) : calls_(calls) {}
+  OcrReading Read(const cv::Mat&) override {
+    ++*calls_;
+    return {"214", 0.9};
+  }
+
+ private:
+  int* calls_;
+};
+
+TEST(TextExtractor, SendsAtMostMaxRegionsPerFrameBoxesToTheOcr) {
+  cv::Mat image = test::MakeWall();
+  for (const int x : {100, 300, 500}) test::DrawPlate(image, "214", cv::Point(x, test::kBandCenterY));
+  TextExtractorOptions options;
+  options.max_regions_per_frame = 2;
+  int calls = 0;
+  TextExtractor extractor(options, std::make_unique<MserBandDetector>(options.detector),
+                          std::make_unique<CountingOcr>(&calls));
+  extractor.Process(image, 0.0);
+  EXPECT_EQ(calls, 2);
+  EXPECT_EQ(extractor.last_observations().size(), 2u);
+}
+
+}  // namespace
+}  // namespace doorplate_localization
