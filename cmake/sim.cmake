@@ -6,6 +6,8 @@ add_library(doorplate_sim
   src/sim/laser_simulator.cpp
   src/sim/odometry_simulator.cpp
   src/sim/camera_renderer.cpp
+  src/sim/sign_texture.cpp
+  src/sim/image_noise.cpp
   src/sim/simulator.cpp
   src/sim/top_down_view.cpp)
 target_include_directories(doorplate_sim PUBLIC include)

@@ -12,8 +12,7 @@ add_library(doorplate_text
   src/text/plate_reading_validator.cpp
   src/text/plate_tracker.cpp
   src/text/text_extractor.cpp)
-target_include_directories(doorplate_text PUBLIC include ${OpenCV_INCLUDE_DIRS}
-  PRIVATE ${TESSERACT_INCLUDE_DIRS})
+target_include_directories(doorplate_text PUBLIC include PRIVATE ${TESSERACT_INCLUDE_DIRS})
 target_link_libraries(doorplate_text PUBLIC opencv_core opencv_imgproc
   PRIVATE opencv_features2d ${TESSERACT_LINK_LIBRARIES})
 if(DOORPLATE_SANITIZE)
@@ -34,8 +33,7 @@ install(TARGETS doorplate_text doorplate_text_bench
 if(CATKIN_ENABLE_TESTING)
   foreach(name box_nms character_grouping mser_band_detector ocr_preprocess tesseract_ocr
                plate_reading_validator plate_tracker text_extractor)
-    catkin_add_gtest(${name}_test test/text/${name}_test.cpp)
-    target_link_libraries(${name}_test doorplate_text GTest::gtest_main)
+    doorplate_add_core_test(${name}_test test/text/${name}_test.cpp doorplate_text)
   endforeach()
   foreach(name tesseract_ocr mser_band_detector)
     target_link_libraries(${name}_test opencv_imgcodecs)  # they read the real-photo fixtures

@@ -4,10 +4,11 @@
 // exact for this scene). The camera's pitch is a pure rotation, i.e. the homography K·R·K⁻¹, applied by
 // one remap from a taller unpitched image. Signs are sampled from mip-mapped textures drawn once with
 // OpenCV's anti-aliased Hershey fonts, so digits stay crisp at any distance.
-// Length: ~550 lines, over the ~400 guideline: the ray caster, the pitch maps and Project share one camera
-// model and stay together; the sign textures and the image degradations (~170 lines of free functions)
-// could move to their own file once cmake/sim.cmake lists one.
+// Sign textures live in sign_texture.cpp, the noise and blur helpers in image_noise.cpp.
 #include "doorplate_localization/sim/camera_renderer.h"
+
+#include "image_noise.h"
+#include "sign_texture.h"
 
 #include <algorithm>
 #include <array>
@@ -26,8 +27,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kMaxHitsPerColumn = 12;   // nearest surfaces kept per column (enough for rooms behind doors)
 constexpr double kNearDepthM = 0.02;    // surfaces closer than this along the optical axis are clipped
-constexpr double kSignPxPerM = 1500.0;  // sign texture resolution (the camera needs < 400 px/m at 1.5 m)
-constexpr double kMaxSignTexturePx = 4096.0;
 constexpr double kDoorFrameM = 0.05;
 constexpr int kNoiseTableSize = 4096;   // indexed by 12 bits of a 16-bit random number
 
@@ -53,175 +52,6 @@ double DistanceShade(double distance_m) { return std::max(0.55, 1.0 / (1.0 + 0.0
 cv::Vec3b Bgr(const ColorRgb& c, double gain) {
   return {cv::saturate_cast<uchar>(c[2] * gain), cv::saturate_cast<uchar>(c[1] * gain),
           cv::saturate_cast<uchar>(c[0] * gain)};
-}
-
-int HersheyFace(SignFont font) {
-  switch (font) {
-    case SignFont::kDuplex: return cv::FONT_HERSHEY_DUPLEX;
-    case SignFont::kComplex: return cv::FONT_HERSHEY_COMPLEX;
-    case SignFont::kTriplex: return cv::FONT_HERSHEY_TRIPLEX;
-    case SignFont::kSimplex: break;
-  }
-  return cv::FONT_HERSHEY_SIMPLEX;
-}
-
-std::vector<std::string> SplitLines(const std::string& text) {
-  std::vector<std::string> lines(1);
-  for (char c : text) {
-    if (c == '\n') lines.emplace_back(); else lines.back() += c;
-  }
-  return lines;
-}
-
-// Draws a sign flat (filled background, thin border, text lines centred) and returns its mip pyramid.
-std::vector<cv::Mat> MakeSignPyramid(const TextSign& sign, std::size_t index) {
-  if (!(sign.width_m > 0.0) || !(sign.height_m > 0.0)) {
-    throw std::invalid_argument("CameraRenderer: world signs[" + std::to_string(index) + "] ('" + sign.text +
-                                "'): width_m and height_m must be > 0");
-  }
-  const double px_per_m = std::min(kSignPxPerM, kMaxSignTexturePx / std::max(sign.width_m, sign.height_m));
-  const int w = std::max(8, static_cast<int>(std::lround(sign.width_m * px_per_m)));
-  const int h = std::max(8, static_cast<int>(std::lround(sign.height_m * px_per_m)));
-  const cv::Scalar fg(sign.foreground[2], sign.foreground[1], sign.foreground[0]);
-  cv::Mat texture(h, w, CV_8UC3, cv::Scalar(sign.background[2], sign.background[1], sign.background[0]));
-  const int border_px = std::max(1, static_cast<int>(std::lround(0.004 * px_per_m)));
-  cv::rectangle(texture, cv::Rect(0, 0, w, h), fg, 2 * border_px);  // centred on the edge: half shows
-
-  const std::vector<std::string> lines = SplitLines(sign.text);
-  const int face = HersheyFace(sign.font);
-  int baseline = 0;
-  const double cap_unit = cv::getTextSize("H", face, 1.0, 1, &baseline).height;
-  double width_unit = 0.0;
-  for (const std::string& line : lines) {
-    width_unit = std::max<double>(width_unit, cv::getTextSize(line, face, 1.0, 1, &baseline).width);
-  }
-  if (width_unit > 0.0) {
-    const int n = static_cast<int>(lines.size());
-    const double block_units = n + 0.6 * (n - 1);  // line gap: 0.6 cap heights
-    const double fill = n == 1 ? 0.33 : 0.6;  // 4 cm digits on a 12 cm plate
-    double scale = std::min(fill * h / (cap_unit * block_units), 0.84 * w / width_unit);
-    const int thickness = std::max(1, static_cast<int>(std::lround(0.13 * cap_unit * scale)));
-    for (const std::string& line : lines) {  // thick strokes widen the text: shrink to fit
-      const double line_w = cv::getTextSize(line, face, scale, thickness, &baseline).width;
-      if (line_w > 0.9 * w) scale *= 0.9 * w / line_w;
-    }
-    const double cap = cap_unit * scale;
-    const double top = (h - cap * block_units) / 2.0;
-    for (int i = 0; i < n; ++i) {
-      const int line_w = cv::getTextSize(lines[i], face, scale, thickness, &baseline).width;
-      const cv::Point origin((w - line_w) / 2, static_cast<int>(std::lround(top + cap * (1.6 * i + 1.0))));
-      cv::putText(texture, lines[i], origin, face, scale, fg, thickness, cv::LINE_AA);
-    }
-  }
-  std::vector<cv::Mat> levels{texture};
-  while (std::min(levels.back().cols, levels.back().rows) >= 4 && levels.size() < 12) {
-    cv::Mat smaller;
-    cv::pyrDown(levels.back(), smaller);
-    levels.push_back(smaller);
-  }
-  return levels;
-}
-
-// table[i] = 16 · stddev · Φ⁻¹((i + 0.5) / n): uniform random indices into it draw N(0, stddev²) in
-// 1/16 grey levels, quantised to n levels (tails cut at ±3.5σ for n = 4096).
-std::vector<std::int16_t> GaussianQuantiles(int n, double stddev) {
-  const auto cdf = [](double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); };
-  const double step = 1e-3;
-  std::vector<std::int16_t> table(n);
-  double x0 = -8.0, f0 = cdf(x0);
-  for (int i = 0; i < n; ++i) {
-    const double p = (i + 0.5) / n;
-    double x1 = x0 + step, f1 = cdf(x1);
-    while (f1 < p) {
-      x0 = x1;
-      f0 = f1;
-      x1 += step;
-      f1 = cdf(x1);
-    }
-    const double value = 16.0 * stddev * (x0 + (p - f0) / (f1 - f0) * step);
-    table[i] = static_cast<std::int16_t>(std::lround(std::clamp(value, -32000.0, 32000.0)));
-  }
-  return table;
-}
-
-// SplitMix64 (Steele, Lea, Flood 2014): a fast 64-bit generator for per-pixel noise, seeded per frame.
-struct SplitMix64 {
-  std::uint64_t state;
-  std::uint64_t operator()() {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-};
-
-// 1-D kernel: a Gaussian (lens blur) convolved with a box of `box_px` pixels (motion during exposure).
-cv::Mat BlurKernel(double sigma_px, double box_px) {
-  std::vector<double> gauss{1.0}, box{1.0};
-  if (sigma_px > 0.05) {
-    const int r = static_cast<int>(std::ceil(3.0 * sigma_px));
-    gauss.assign(2 * r + 1, 0.0);
-    for (int t = -r; t <= r; ++t) gauss[t + r] = std::exp(-0.5 * t * t / (sigma_px * sigma_px));
-  }
-  if (box_px > 1.0) {  // tap t covers [t - 0.5, t + 0.5]; its weight is the overlap with the box
-    const int r = static_cast<int>(std::ceil(box_px / 2.0 - 0.5));
-    box.assign(2 * r + 1, 0.0);
-    for (int t = -r; t <= r; ++t) {
-      box[t + r] = std::max(0.0, std::min(t + 0.5, box_px / 2) - std::max(t - 0.5, -box_px / 2));
-    }
-  }
-  cv::Mat kernel = cv::Mat::zeros(1, static_cast<int>(gauss.size() + box.size() - 1), CV_32F);
-  for (std::size_t i = 0; i < gauss.size(); ++i) {
-    for (std::size_t j = 0; j < box.size(); ++j) kernel.at<float>(0, i + j) += gauss[i] * box[j];
-  }
-  return kernel / cv::sum(kernel)[0];
-}
-
-// Draws a sign into column rows [first, last), seen at `u_m` metres from its left edge (as read). Row r
-// sees `(r - top_row) / rows_per_m` metres below the sign's top. The mip level matches the vertical
-// pixel footprint; `footprint_u_m` wider than that is averaged with extra samples (anisotropy). Edge
-// pixels are blended with what is behind by their coverage (`coverage_u` across, computed here along).
-void SampleSignColumn(const std::vector<cv::Mat>& levels, const TextSign& sign, double u_m,
-                      double footprint_u_m, double coverage_u, double top_row, double rows_per_m,
-                      double shade, int first, int last, cv::Vec3b* column) {
-  const double footprint_v_m = 1.0 / rows_per_m;
-  const double texels_per_px = footprint_v_m * levels[0].rows / sign.height_m;
-  const int level = std::clamp(static_cast<int>(std::floor(std::log2(std::max(texels_per_px, 1.0)))), 0,
-                               static_cast<int>(levels.size()) - 1);
-  const cv::Mat& tex = levels[level];
-  const double px_u = tex.cols / sign.width_m, px_v = tex.rows / sign.height_m;
-  const int samples = std::clamp(static_cast<int>(std::lround(footprint_u_m / footprint_v_m)), 1, 8);
-  std::array<int, 8> x0{}, x1{};
-  std::array<float, 8> wx{};
-  for (int i = 0; i < samples; ++i) {
-    const double tx = (u_m + footprint_u_m * ((i + 0.5) / samples - 0.5)) * px_u - 0.5;
-    const double fl = std::floor(tx);
-    wx[i] = static_cast<float>(tx - fl);
-    x0[i] = std::clamp(static_cast<int>(fl), 0, tex.cols - 1);
-    x1[i] = std::clamp(static_cast<int>(fl) + 1, 0, tex.cols - 1);
-  }
-  const float gain = static_cast<float>(shade / samples);
-  const double bottom_row = top_row + sign.height_m * rows_per_m;
-  for (int r = first; r < last; ++r) {
-    const double coverage_v = std::min(r + 0.5, bottom_row) - std::max(r - 0.5, top_row);
-    const float alpha = static_cast<float>(coverage_u * std::clamp(coverage_v, 0.0, 1.0));
-    const double ty = (r - top_row) / rows_per_m * px_v - 0.5;
-    const double fl = std::floor(ty);
-    const float wy = static_cast<float>(ty - fl);
-    const cv::Vec3b* row0 = tex.ptr<cv::Vec3b>(std::clamp(static_cast<int>(fl), 0, tex.rows - 1));
-    const cv::Vec3b* row1 = tex.ptr<cv::Vec3b>(std::clamp(static_cast<int>(fl) + 1, 0, tex.rows - 1));
-    float acc[3] = {0.f, 0.f, 0.f};
-    for (int i = 0; i < samples; ++i) {
-      for (int ch = 0; ch < 3; ++ch) {
-        const float top = row0[x0[i]][ch] + wx[i] * (row0[x1[i]][ch] - row0[x0[i]][ch]);
-        const float bottom = row1[x0[i]][ch] + wx[i] * (row1[x1[i]][ch] - row1[x0[i]][ch]);
-        acc[ch] += top + wy * (bottom - top);
-      }
-    }
-    for (int ch = 0; ch < 3; ++ch) {
-      column[r][ch] = cv::saturate_cast<uchar>(alpha * acc[ch] * gain + (1.f - alpha) * column[r][ch]);
-    }
-  }
 }
 
 }  // namespace
