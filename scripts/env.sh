@@ -9,8 +9,11 @@ export PATH="/usr/bin:/bin:/usr/sbin:/sbin:$PATH"
 export OMP_THREAD_LIMIT=1
 export ROS_PYTHON_VERSION=3
 export ROS_DISTRO="${ROS_DISTRO:-Debian}"  # the value /etc/catkin/profile.d/1.ros_distro.sh expects
-export ROS_MASTER_URI="${ROS_MASTER_URI:-http://localhost:11311}"
-export ROS_HOSTNAME="${ROS_HOSTNAME:-localhost}"
+# Local ROS graph. A minimal root without /etc/hosts cannot resolve "localhost": use the loopback address.
+if getent hosts localhost > /dev/null 2>&1; then _dl_host=localhost; else _dl_host=127.0.0.1; fi
+export ROS_MASTER_URI="${ROS_MASTER_URI:-http://$_dl_host:11311}"
+export ROS_HOSTNAME="${ROS_HOSTNAME:-$_dl_host}"
+unset _dl_host
 export ROS_HOME="${ROS_HOME:-$DOORPLATE_BUILD/ros_home}"
 if [ -f "$DOORPLATE_BUILD/devel/setup.bash" ]; then
   # shellcheck disable=SC1091

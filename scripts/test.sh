@@ -13,7 +13,8 @@ status=0
 bash "$repo/scripts/build.sh" "$build" || { echo "build failed"; exit 1; }
 source "$repo/scripts/env.sh" "$build"
 rm -rf "$build/test_results"
-cmake --build "$build" --target run_tests -- -j1 2>&1 | tee "$build/run_tests.log" | grep -E "^\[ *(RUN|OK|FAILED|PASSED) |^\[ROSTEST\]|^SUMMARY|^ \* RESULT|^-- run_tests" || true
+cmake --build "$build" --target run_tests -- -j1 2>&1 | tee "$build/run_tests.log" \
+  | grep -E "^\[ *(RUN|OK|FAILED|PASSED) |^\[ROSTEST\]|^SUMMARY|^ \* RESULT|^-- run_tests|FAILURE|ERROR|FATAL|RLException|Traceback|rror:" || true
 
 passed=0; failed=0
 summary=$(/usr/bin/python3 "$repo/scripts/count_test_results.py" "$build/test_results")
