@@ -23,3 +23,8 @@ if [ "${1:-}" = "--with-viz" ]; then
 fi
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${PKGS[@]}"
+# roslaunch resolves "localhost" for every local node; a minimal root (container, chroot) may lack it.
+if ! getent hosts localhost > /dev/null 2>&1; then
+  echo "install_deps: 'localhost' does not resolve; adding '127.0.0.1 localhost' to /etc/hosts (roslaunch needs it)"
+  echo "127.0.0.1 localhost" | $SUDO tee -a /etc/hosts > /dev/null
+fi
