@@ -9,22 +9,27 @@ add_library(doorplate_sim
   src/sim/sign_texture.cpp
   src/sim/image_noise.cpp
   src/sim/simulator.cpp
-  src/sim/top_down_view.cpp)
+  src/sim/top_down_view.cpp
+  src/sim/ground_truth_maps.cpp)
 target_include_directories(doorplate_sim PUBLIC include)
-target_link_libraries(doorplate_sim PUBLIC doorplate_common ${OpenCV_LIBS} PRIVATE yaml-cpp)
+target_link_libraries(doorplate_sim PUBLIC doorplate_common doorplate_maps ${OpenCV_LIBS} PRIVATE yaml-cpp)
 
 add_executable(doorplate_sim_bench bench/sim_bench.cpp)
 target_link_libraries(doorplate_sim_bench doorplate_sim)
 target_compile_definitions(doorplate_sim_bench PRIVATE DOORPLATE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 add_executable(doorplate_sim_snapshot src/tools/sim_snapshot.cpp)
 target_link_libraries(doorplate_sim_snapshot doorplate_sim)
+# Ground-truth occupancy and text maps of a world file (maps/ holds those of worlds/).
+add_executable(doorplate_world_maps src/tools/world_maps.cpp)
+target_link_libraries(doorplate_world_maps doorplate_sim)
 
-install(TARGETS doorplate_sim doorplate_sim_bench doorplate_sim_snapshot
+install(TARGETS doorplate_sim doorplate_sim_bench doorplate_sim_snapshot doorplate_world_maps
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(name world world_loader laser_simulator odometry_simulator camera_renderer simulator top_down_view)
+  foreach(name world world_loader laser_simulator odometry_simulator camera_renderer simulator top_down_view
+               ground_truth_maps)
     doorplate_add_core_test(${name}_test test/sim/${name}_test.cpp doorplate_sim)
   endforeach()
 endif()
