@@ -2,6 +2,7 @@
 // down a built-in corridor with laser and camera at several rates, on one thread.
 // Usage: doorplate_sim_bench [--world FILE] [--seconds S] [--seed N] [--markdown OUT.md]
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -35,15 +36,18 @@ Result RunCase(const World& world, const Case& c, double seconds, std::uint64_t 
   Simulator sim(world, options);
   sim.SetCommand(0.4, 0.0);
   const int steps = static_cast<int>(seconds / options.physics_step_s);
-  const int laser_every = c.laser_hz > 0 ? static_cast<int>(1.0 / (c.laser_hz * options.physics_step_s)) : 0;
-  const int camera_every = c.camera_hz > 0 ? static_cast<int>(1.0 / (c.camera_hz * options.physics_step_s)) : 0;
+  // A sensor fires at the first step of each of its periods: when floor(t * rate) changes.
+  const auto due = [&](double rate_hz, int step) {
+    const double dt = options.physics_step_s;
+    return rate_hz > 0 && std::floor(step * dt * rate_hz + 1e-9) != std::floor((step - 1) * dt * rate_hz + 1e-9);
+  };
   int scans = 0, images = 0;
   double checksum = 0.0;
   const auto start = std::chrono::steady_clock::now();
   for (int i = 0; i < steps; ++i) {
     sim.Step();
-    if (laser_every && i % laser_every == 0) checksum += sim.Scan().ranges_m[0], ++scans;
-    if (camera_every && i % camera_every == 0) checksum += sim.CameraImage().at<cv::Vec3b>(0, 0)[0], ++images;
+    if (due(c.laser_hz, i)) checksum += sim.Scan().ranges_m[0], ++scans;
+    if (due(c.camera_hz, i)) checksum += sim.CameraImage().at<cv::Vec3b>(0, 0)[0], ++images;
     if (sim.bumped()) sim.Teleport(world.start_pose);  // keep driving for the whole run
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
