@@ -1,0 +1,39 @@
+#include "doorplate_localization/mcl/plate_reading.h"
+
+#include <cctype>
+#include <cmath>
+
+namespace doorplate_localization {
+
+std::string ValidatePlateReading(const PlateReading& reading) {
+  if (CanonicalPlateText(reading.text).empty()) return "PlateReading.text: empty";
+  if (!(reading.confidence >= 0.0 && reading.confidence <= 1.0)) {
+    return "PlateReading.confidence: must be in [0, 1], got " + std::to_string(reading.confidence);
+  }
+  if (!std::isfinite(reading.bearing_rad)) return "PlateReading.bearing_rad: must be finite";
+  if (reading.range_m && !(std::isfinite(*reading.range_m) && *reading.range_m > 0.0)) {
+    return "PlateReading.range_m: must be finite and > 0 when set, got " + std::to_string(*reading.range_m);
+  }
+  const double bearing = std::remainder(reading.bearing_rad, 2.0 * M_PI);
+  if (reading.camera_side == CameraSide::kLeft && !(bearing > 0.0)) {
+    return "PlateReading.bearing_rad: a left camera sees plates at bearings in (0, pi), got " +
+           std::to_string(reading.bearing_rad);
+  }
+  if (reading.camera_side == CameraSide::kRight && !(bearing < 0.0)) {
+    return "PlateReading.bearing_rad: a right camera sees plates at bearings in (-pi, 0), got " +
+           std::to_string(reading.bearing_rad);
+  }
+  return "";
+}
+
+std::string CanonicalPlateText(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (unsigned char c : text) {
+    if (std::isspace(c) || c == '-') continue;
+    out.push_back(static_cast<char>(std::toupper(c)));
+  }
+  return out;
+}
+
+}  // namespace doorplate_localization
