@@ -5,9 +5,18 @@ add_library(doorplate_nodelets
   src/ros/sim_conversions.cpp
   src/ros/scan_conversions.cpp
   src/ros/wall_follower_options.cpp
-  src/ros/wall_follower_nodelet.cpp)
+  src/ros/wall_follower_nodelet.cpp
+  src/ros/text_conversions.cpp
+  src/ros/text_extractor_options.cpp
+  src/ros/text_extractor_nodelet.cpp)
+# cv_bridge (sensor_msgs/Image <-> cv::Mat) for the text extractor. Its cv_bridge_LIBRARIES lists every
+# OpenCV module Debian builds (viz, cvv, ... with VTK and Qt behind them): link libcv_bridge alone.
+find_package(cv_bridge REQUIRED)
+find_library(CV_BRIDGE_LIBRARY cv_bridge REQUIRED)
 target_include_directories(doorplate_nodelets PUBLIC include PRIVATE ${catkin_INCLUDE_DIRS})
+target_include_directories(doorplate_nodelets PUBLIC ${cv_bridge_INCLUDE_DIRS})
 target_link_libraries(doorplate_nodelets doorplate_sim doorplate_behaviour ${catkin_LIBRARIES})
+target_link_libraries(doorplate_nodelets doorplate_text ${CV_BRIDGE_LIBRARY})
 add_dependencies(doorplate_nodelets ${PROJECT_NAME}_generate_messages_cpp)
 install(TARGETS doorplate_nodelets LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 
@@ -20,16 +29,28 @@ if(CATKIN_ENABLE_TESTING)
   target_include_directories(scan_conversions_test PRIVATE ${catkin_INCLUDE_DIRS})
   target_link_libraries(scan_conversions_test doorplate_nodelets GTest::gtest_main ${catkin_LIBRARIES})
 
+  catkin_add_gtest(text_conversions_test test/ros/text_conversions_test.cpp)
+  target_include_directories(text_conversions_test PRIVATE ${catkin_INCLUDE_DIRS})
+  target_link_libraries(text_conversions_test doorplate_nodelets GTest::gtest_main ${catkin_LIBRARIES})
+
   # rostests: a nodelet manager loads our nodelets through pluginlib; the checker waits on topics.
   # The checker also tests LoadCorridorSimOptions (needs a parameter server), hence src/ros and the library.
   add_rostest_gtest(corridor_sim_nodelet_rostest test/ros/corridor_sim_nodelet.test
                     test/ros/corridor_sim_nodelet_rostest.cpp)
   target_include_directories(corridor_sim_nodelet_rostest PRIVATE src/ros ${catkin_INCLUDE_DIRS})
   target_link_libraries(corridor_sim_nodelet_rostest doorplate_nodelets doorplate_sim ${catkin_LIBRARIES})
+
+  # Sim + wall follower + text extractor in one manager: a north-wall plate is read at its crossing.
+  # The checker also tests LoadTextExtractorOptions and the lazy camera subscription.
+  add_rostest_gtest(text_extractor_nodelet_rostest test/ros/text_extractor_nodelet.test
+                    test/ros/text_extractor_nodelet_rostest.cpp)
+  target_include_directories(text_extractor_nodelet_rostest PRIVATE src/ros ${catkin_INCLUDE_DIRS})
+  target_link_libraries(text_extractor_nodelet_rostest doorplate_nodelets ${catkin_LIBRARIES})
 endif()
 
 # Tools that read ROS data (bags).
 add_executable(doorplate_run_report src/ros/tools/run_report.cpp)
 target_include_directories(doorplate_run_report PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(doorplate_run_report doorplate_sim ${catkin_LIBRARIES})
+add_dependencies(doorplate_run_report ${PROJECT_NAME}_generate_messages_cpp)  # reads text_detections
 install(TARGETS doorplate_run_report RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})

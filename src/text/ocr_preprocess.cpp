@@ -80,6 +80,7 @@ void ValidateOcrPreprocessOptions(const OcrPreprocessOptions& o) {
     throw std::invalid_argument("OcrPreprocessOptions.target_text_height_px must be >= 8");
   }
   if (o.border_px < 0) throw std::invalid_argument("OcrPreprocessOptions.border_px must be >= 0");
+  if (o.ink_thinning_px < 0) throw std::invalid_argument("OcrPreprocessOptions.ink_thinning_px must be >= 0");
   if (o.min_text_height_px < 1) {
     throw std::invalid_argument("OcrPreprocessOptions.min_text_height_px must be >= 1");
   }
@@ -116,7 +117,12 @@ cv::Mat PrepareCropForOcr(const cv::Mat& crop, const OcrPreprocessOptions& optio
   const double scale = static_cast<double>(options.target_text_height_px) / text_h;
   cv::Mat scaled;
   cv::resize(grey, scaled, cv::Size(), scale, scale, scale > 1.0 ? cv::INTER_CUBIC : cv::INTER_AREA);
-  const cv::Mat clean = CleanInk(InkMask(scaled, threshold), options.target_text_height_px / 4);
+  cv::Mat ink = InkMask(scaled, threshold);
+  if (options.ink_thinning_px > 0) {
+    const int size = 2 * options.ink_thinning_px + 1;
+    cv::erode(ink, ink, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(size, size)));
+  }
+  const cv::Mat clean = CleanInk(ink, options.target_text_height_px / 4);
   cv::Mat out = 255 - clean;
   cv::copyMakeBorder(out, out, options.border_px, options.border_px, options.border_px, options.border_px,
                      cv::BORDER_CONSTANT, cv::Scalar(255));

@@ -46,10 +46,13 @@ std::vector<PlateReport> TextExtractor::Process(const cv::Mat& image, double sta
     regions.resize(options_.max_regions_per_frame);
   }
   last_observations_.clear();
+  const cv::Rect image_rect(0, 0, grey.cols, grey.rows);
   for (const TextRegion& region : regions) {
-    const OcrReading reading = ocr_->Read(grey(region.box_px));
+    const cv::Rect box = region.box_px & image_rect;  // another detector might not clip
+    if (box.empty()) continue;
+    const OcrReading reading = ocr_->Read(grey(box));
     PlateObservation observation;
-    observation.box_px = region.box_px;
+    observation.box_px = box;
     observation.raw_text = reading.text;
     if (const auto text = validator_.Validate(reading.text)) {
       observation.text = *text;

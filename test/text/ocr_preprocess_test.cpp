@@ -41,8 +41,22 @@ TEST(PrepareCropForOcr, TurnsLightTextOnADarkPlateIntoDarkText) {
   const cv::Mat out = PrepareCropForOcr(PlateCrop(cv::Scalar(50, 30, 30), cv::Scalar(235, 235, 235)), {});
   ASSERT_FALSE(out.empty());
   const cv::Rect ink = InkBox(out);
-  EXPECT_NEAR(ink.height, 40, 3);
+  EXPECT_NEAR(ink.height, OcrPreprocessOptions{}.target_text_height_px, 3);
   EXPECT_GT(cv::countNonZero(out), out.total() / 2);  // mostly white background
+}
+
+TEST(PrepareCropForOcr, InkThinningMakesTheStrokesThinnerButKeepsTheGlyphs) {
+  const cv::Mat crop = PlateCrop(cv::Scalar(240, 245, 245), cv::Scalar(20, 20, 20));
+  OcrPreprocessOptions bold;
+  bold.ink_thinning_px = 0;
+  OcrPreprocessOptions thin = bold;
+  thin.ink_thinning_px = 1;
+  const cv::Mat bold_out = PrepareCropForOcr(crop, bold), thin_out = PrepareCropForOcr(crop, thin);
+  ASSERT_EQ(bold_out.size(), thin_out.size());
+  const int bold_ink = cv::countNonZero(bold_out == 0), thin_ink = cv::countNonZero(thin_out == 0);
+  EXPECT_LT(thin_ink, bold_ink * 9 / 10);
+  EXPECT_GT(thin_ink, bold_ink / 3);
+  EXPECT_NEAR(InkBox(thin_out).height, InkBox(bold_out).height, 3);
 }
 
 TEST(PrepareCropForOcr, ReturnsEmptyForACropWithoutText) {
@@ -58,6 +72,12 @@ TEST(PrepareCropForOcr, RejectsEmptyAndFloatCrops) {
 TEST(ValidateOcrPreprocessOptions, RejectsATinyTargetHeight) {
   OcrPreprocessOptions options;
   options.target_text_height_px = 2;
+  EXPECT_THROW(ValidateOcrPreprocessOptions(options), std::invalid_argument);
+}
+
+TEST(ValidateOcrPreprocessOptions, RejectsNegativeInkThinning) {
+  OcrPreprocessOptions options;
+  options.ink_thinning_px = -1;
   EXPECT_THROW(ValidateOcrPreprocessOptions(options), std::invalid_argument);
 }
 

@@ -37,7 +37,8 @@ class TextExtractor {
 
   // Processes one camera image (CV_8UC3 BGR or CV_8UC1 grey) taken at `stamp_s` seconds. Returns the
   // plates reported in this frame (usually none; one per plate as it crosses the image centre).
-  // Throws std::invalid_argument for an empty image or another type; the extractor stays usable.
+  // Throws std::invalid_argument for an empty image or another type, or when the detector's band does
+  // not fit the image (field named); the extractor stays usable.
   std::vector<PlateReport> Process(const cv::Mat& image, double stamp_s);
 
   // Every text box of the last processed frame with its OCR and validated text (for display).

@@ -1,0 +1,24 @@
+# Laser SLAM (ROS-free): Rao-Blackwellized particle filter with tiled copy-on-write maps, the CARMEN
+# log reader, and the offline real-log command doorplate_map_log.
+add_library(doorplate_slam
+  src/slam/carmen_reader.cpp
+  src/slam/correlative_search.cpp
+  src/slam/motion_model.cpp
+  src/slam/rbpf_slam.cpp
+  src/slam/rbpf_slam_options.cpp
+  src/slam/scan_matcher.cpp
+  src/slam/tiled_grid.cpp
+  src/slam/trajectory_tree.cpp)
+target_include_directories(doorplate_slam PUBLIC include)
+target_link_libraries(doorplate_slam PUBLIC doorplate_common doorplate_maps PRIVATE Eigen3::Eigen)
+install(TARGETS doorplate_slam LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
+
+add_executable(doorplate_map_log src/tools/map_carmen.cpp)
+target_link_libraries(doorplate_map_log doorplate_slam doorplate_maps opencv_core opencv_imgproc opencv_imgcodecs)
+install(TARGETS doorplate_map_log RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+
+if(CATKIN_ENABLE_TESTING)
+  foreach(name carmen_reader correlative_search tiled_grid scan_matcher motion_model trajectory_tree rbpf_slam rbpf_slam_options)
+    doorplate_add_core_test(${name}_test test/slam/${name}_test.cpp doorplate_slam)
+  endforeach()
+endif()

@@ -1,0 +1,147 @@
+#include "doorplate_localization/behaviour/corridor_sweep.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace doorplate_localization {
+namespace {
+
+void Require(bool ok, const char* field, const char* rule) {
+  if (!ok) throw std::invalid_argument(std::string("CorridorSweepOptions.") + field + ": " + rule);
+}
+
+const CorridorSweepOptions& Validated(const CorridorSweepOptions& o) {
+  Require(o.turn_speed_rps > 0, "turn_speed_rps", "must be > 0");
+  Require(o.turn_tolerance_rad > 0 && o.turn_tolerance_rad < M_PI / 2, "turn_tolerance_rad", "must be in (0, pi/2)");
+  Require(o.parallel_tolerance_rad > 0, "parallel_tolerance_rad", "must be > 0");
+  Require(o.approach_sector_max_deg > o.follower.side_sector_min_deg && o.approach_sector_max_deg <= 180,
+          "approach_sector_max_deg", "must be in (follower.side_sector_min_deg, 180]");
+  Require(o.approach_max_range_m > o.follower.wall_distance_m, "approach_max_range_m",
+          "must be > follower.wall_distance_m");
+  Require(o.approach_tolerance_m > 0, "approach_tolerance_m", "must be > 0");
+  Require(o.wall_gate_m > 0, "wall_gate_m", "must be > 0");
+  Require(o.min_wall_span_m >= 0, "min_wall_span_m", "must be >= 0");
+  return o;
+}
+
+WallFollowerOptions ApproachOptions(const CorridorSweepOptions& o) {
+  WallFollowerOptions approach = o.follower;
+  approach.side_sector_max_deg = o.approach_sector_max_deg;
+  approach.side_max_range_m = o.approach_max_range_m;
+  return approach;
+}
+
+}  // namespace
+
+const char* SweepPhaseName(SweepPhase phase) {
+  switch (phase) {
+    case SweepPhase::kFollowOut:
+      return "follow_out";
+    case SweepPhase::kTurnAround:
+      return "turn_around";
+    case SweepPhase::kFollowBack:
+      return "follow_back";
+    case SweepPhase::kDone:
+      return "done";
+  }
+  return "unknown";
+}
+
+CorridorSweep::CorridorSweep(const CorridorSweepOptions& options)
+    : options_(Validated(options)), follower_(options.follower), approach_observer_(ApproachOptions(options)) {}
+
+void CorridorSweep::Reset() {
+  phase_ = SweepPhase::kFollowOut;
+  last_observation_ = CorridorObservation{};
+  approaching_ = true;
+  has_wall_ = false;
+  turned_rad_ = 0.0;
+}
+
+VelocityCommand CorridorSweep::Step(const std::vector<float>& ranges_m, double angle_min_rad,
+                                    double angle_increment_rad, const Pose2D& odom_pose) {
+  if (phase_ == SweepPhase::kDone) return {};
+  const CorridorObservation approach = approach_observer_.Observe(ranges_m, angle_min_rad, angle_increment_rad);
+  if (phase_ == SweepPhase::kTurnAround) {
+    last_observation_ = approach;
+    const VelocityCommand turn = Turn(approach, odom_pose);
+    if (phase_ == SweepPhase::kTurnAround) return turn;
+  }
+  if (approaching_ && approach.wall_found &&
+      std::fabs(approach.wall_distance_m - options_.follower.wall_distance_m) <= options_.approach_tolerance_m) {
+    approaching_ = false;
+  }
+  last_observation_ = approaching_ ? approach : ObserveGated(ranges_m, angle_min_rad, angle_increment_rad);
+  if (!approaching_ && last_observation_.wall_found) {
+    wall_ = last_observation_;
+    has_wall_ = true;
+  }
+  WallFollowState state;
+  const VelocityCommand command = follower_.Command(last_observation_, &state);
+  if (state != WallFollowState::kEndReached) return command;
+  if (phase_ == SweepPhase::kFollowBack) {
+    phase_ = SweepPhase::kDone;
+    return {};
+  }
+  phase_ = SweepPhase::kTurnAround;
+  approaching_ = true;  // the way back starts at the far wall's distance
+  has_wall_ = false;
+  turned_rad_ = 0.0;
+  last_yaw_rad_ = odom_pose.theta_rad;
+  last_observation_ = approach;
+  return Turn(approach, odom_pose);
+}
+
+CorridorObservation CorridorSweep::ObserveGated(const std::vector<float>& ranges_m, double angle_min_rad,
+                                                double angle_increment_rad) const {
+  const CorridorObservation raw = follower_.Observe(ranges_m, angle_min_rad, angle_increment_rad);
+  if (!has_wall_) return raw;
+  // The previous line in base_link: direction wall_.wall_angle_rad, on the followed side at its distance.
+  const double side_sign = options_.follower.wall_side == "left" ? 1.0 : -1.0;
+  const Vec2 along{std::cos(wall_.wall_angle_rad), std::sin(wall_.wall_angle_rad)};
+  const Vec2 normal{-along.y, along.x};
+  const double offset = side_sign * wall_.wall_distance_m;
+  const WallFollowerOptions& f = options_.follower;
+  double span_min = std::numeric_limits<double>::infinity(), span_max = -span_min;
+  std::vector<float> gated = ranges_m;
+  for (size_t i = 0; i < gated.size(); ++i) {
+    const double r = gated[i];
+    if (!std::isfinite(r) || r <= 0.0) continue;
+    const double a = NormalizeAngle(angle_min_rad + static_cast<double>(i) * angle_increment_rad);
+    const Vec2 p{r * std::cos(a), r * std::sin(a)};
+    if (side_sign * p.y <= 0.0) continue;
+    if (std::fabs(Dot(normal, p) - offset) > options_.wall_gate_m) {
+      gated[i] = std::numeric_limits<float>::infinity();
+      continue;
+    }
+    const double side_angle_deg = side_sign * a * 180.0 / M_PI;
+    if (side_angle_deg >= f.side_sector_min_deg && side_angle_deg <= f.side_sector_max_deg && r <= f.side_max_range_m) {
+      span_min = std::min(span_min, Dot(along, p));
+      span_max = std::max(span_max, Dot(along, p));
+    }
+  }
+  CorridorObservation observation = follower_.Observe(gated, angle_min_rad, angle_increment_rad);
+  if (!(span_max - span_min >= options_.min_wall_span_m)) observation.wall_found = false;
+  observation.front_distance_m = raw.front_distance_m;  // the end wall and obstacles ahead are never gated
+  observation.width_m = raw.width_m;
+  return observation;
+}
+
+VelocityCommand CorridorSweep::Turn(const CorridorObservation& observation, const Pose2D& odom_pose) {
+  turned_rad_ += std::fabs(NormalizeAngle(odom_pose.theta_rad - last_yaw_rad_));
+  last_yaw_rad_ = odom_pose.theta_rad;
+  const bool parallel = observation.wall_found && std::fabs(observation.wall_angle_rad) <= options_.parallel_tolerance_rad;
+  if ((turned_rad_ >= M_PI - options_.turn_tolerance_rad && parallel) ||
+      turned_rad_ >= M_PI + options_.turn_tolerance_rad) {
+    phase_ = SweepPhase::kFollowBack;
+    return {};
+  }
+  // Turn away from the followed wall: counter-clockwise when it is on the right.
+  const double direction = options_.follower.wall_side == "right" ? 1.0 : -1.0;
+  return {0.0, direction * options_.turn_speed_rps};
+}
+
+}  // namespace doorplate_localization

@@ -1,0 +1,13 @@
+// The subcommands of doorplate_eval. Each takes the words after its name and the whole command line (to
+// record in its results), returns the process exit code and throws UsageError for bad options.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace doorplate_localization {
+
+// Text reading on a corridor sweep (paper Table I, Figure 12): ocr_command.cpp.
+int RunOcrCommand(const std::vector<std::string>& args, const std::string& command_line);
+
+}  // namespace doorplate_localization

@@ -1,0 +1,115 @@
+#include "doorplate_localization/slam/carmen_reader.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace doorplate_localization {
+namespace {
+
+std::string Where(const std::string& source, int line_number) {
+  return source + ":" + std::to_string(line_number) + ": ";
+}
+
+// Splits on blanks without copying more than the tokens.
+std::vector<std::string> Tokens(const std::string& line) {
+  std::vector<std::string> tokens;
+  std::istringstream in(line);
+  std::string token;
+  while (in >> token) tokens.push_back(token);
+  return tokens;
+}
+
+double ParseDouble(const std::string& text, const std::string& where, const std::string& field) {
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(begin, &end);
+  if (end == begin || *end != '\0' || errno == ERANGE || !std::isfinite(value)) {
+    throw CarmenLogError(where + field + ": not a finite number: '" + text + "'");
+  }
+  return value;
+}
+
+CarmenScan ParseFlaser(const std::vector<std::string>& t, const std::string& where,
+                       const CarmenReaderOptions& options) {
+  if (t.size() < 2) throw CarmenLogError(where + "FLASER: missing beam count");
+  const double count = ParseDouble(t[1], where, "beam count");
+  if (count < 2 || count > 100000 || count != std::floor(count)) {
+    throw CarmenLogError(where + "beam count: must be an integer in [2, 100000], got " + t[1]);
+  }
+  const int n = static_cast<int>(count);
+  if (static_cast<int>(t.size()) < n + 8) {
+    throw CarmenLogError(where + "FLASER with " + std::to_string(n) + " beams needs " +
+                         std::to_string(n + 8) + " fields (ranges and two poses), got " +
+                         std::to_string(t.size()));
+  }
+  CarmenScan out;
+  RangeScan& scan = out.scan;
+  const int steps = (n % 2 == 0) ? n : n - 1;  // 180 -> 1°, 360 -> 0.5°, 361 -> 0.5° with both ends
+  scan.angle_min_rad = options.first_beam_angle_rad;
+  scan.angle_increment_rad = options.field_of_view_rad / steps;
+  scan.min_range_m = options.min_range_m;
+  scan.ranges_m.resize(n);
+  for (int i = 0; i < n; ++i) {
+    scan.ranges_m[i] =
+        static_cast<float>(ParseDouble(t[2 + i], where, "range " + std::to_string(i)));
+  }
+  const auto pose = [&](int first, const char* name) {
+    return Pose2D{ParseDouble(t[first], where, std::string(name) + " x"),
+                  ParseDouble(t[first + 1], where, std::string(name) + " y"),
+                  ParseDouble(t[first + 2], where, std::string(name) + " theta")};
+  };
+  out.laser_pose = pose(2 + n, "laser pose");
+  out.odometry_pose = pose(5 + n, "odometry pose");
+  if (static_cast<int>(t.size()) > n + 8) {
+    out.timestamp_s = ParseDouble(t[n + 8], where, "ipc_timestamp");
+  }
+  return out;
+}
+
+}  // namespace
+
+CarmenLog ReadCarmenLog(std::istream& stream, const std::string& source,
+                        const CarmenReaderOptions& options) {
+  CarmenLog log;
+  std::string line;
+  int line_number = 0;
+  float largest = 0.0f;
+  while (std::getline(stream, line)) {
+    ++line_number;
+    if (line.compare(0, 7, "FLASER ") != 0) continue;
+    CarmenScan scan = ParseFlaser(Tokens(line), Where(source, line_number), options);
+    scan.line_number = line_number;
+    scan.scan_index = static_cast<int>(log.scans.size());
+    for (float r : scan.scan.ranges_m) largest = std::max(largest, r);
+    log.scans.push_back(std::move(scan));
+  }
+  if (stream.bad()) throw CarmenLogError(source + ": read error after line " + std::to_string(line_number));
+
+  double no_return = options.no_return_range_m;
+  if (no_return <= 0.0 && largest >= options.min_no_return_range_m) no_return = largest;
+  if (no_return > 0.0) {
+    // Readings are printed with two or three decimals: anything within 5 mm of the value is it.
+    const float threshold = static_cast<float>(no_return - 0.005);
+    for (CarmenScan& scan : log.scans) {
+      for (float& r : scan.scan.ranges_m) {
+        if (r >= threshold) r = std::numeric_limits<float>::infinity();
+      }
+    }
+    log.no_return_range_m = no_return;
+  }
+  return log;
+}
+
+CarmenLog ReadCarmenLogFile(const std::string& path, const CarmenReaderOptions& options) {
+  std::ifstream in(path);
+  if (!in) throw CarmenLogError(path + ": cannot open");
+  return ReadCarmenLog(in, path, options);
+}
+
+}  // namespace doorplate_localization

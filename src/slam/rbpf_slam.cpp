@@ -1,0 +1,211 @@
+#include "doorplate_localization/slam/rbpf_slam.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <unordered_set>
+
+namespace doorplate_localization {
+namespace {
+
+const RbpfSlamOptions& Validated(const RbpfSlamOptions& o) {
+  const auto fail = [](const std::string& what) { throw std::invalid_argument("RbpfSlamOptions." + what); };
+  if (o.num_particles < 1) fail("num_particles: must be >= 1, got " + std::to_string(o.num_particles));
+  if (!(o.linear_update_m >= 0) || !(o.angular_update_rad >= 0)) fail("linear/angular_update: must be >= 0");
+  if (!(o.resample_neff_ratio >= 0 && o.resample_neff_ratio <= 1)) fail("resample_neff_ratio: must be in [0, 1]");
+  if (!(o.likelihood_gain > 0)) fail("likelihood_gain: must be > 0");
+  if (!(o.max_usable_range_m > 0)) fail("max_usable_range_m: must be > 0");
+  if (!(o.no_return_clear_range_m >= 0)) fail("no_return_clear_range_m: must be >= 0");
+  if (o.max_match_points < 3) fail("max_match_points: must be >= 3");
+  return o;
+}
+
+void ValidateScan(const RangeScan& scan) {
+  if (scan.ranges_m.empty() || !std::isfinite(scan.angle_increment_rad) || scan.angle_increment_rad == 0.0 ||
+      !std::isfinite(scan.angle_min_rad)) {
+    throw std::invalid_argument(
+        "RbpfSlam: a scan needs ranges, a finite angle_min_rad and a finite, non-zero angle_increment_rad");
+  }
+}
+
+}  // namespace
+
+RbpfSlam::RbpfSlam(const RbpfSlamOptions& options)
+    : options_(Validated(options)),
+      motion_(options.motion),
+      matcher_(options.matcher, options.grid),
+      rng_(options.seed) {}
+
+RbpfSlam::ScanPoints RbpfSlam::PrepareScan(const RangeScan& scan) const {
+  ScanPoints points;
+  points.origin = scan.laser_pose.Position();
+  std::vector<Vec2> hits;
+  const double usable = options_.max_usable_range_m;
+  for (int i = 0; i < static_cast<int>(scan.ranges_m.size()); ++i) {
+    const double r = scan.ranges_m[i];
+    if (std::isnan(r) || r < scan.min_range_m) continue;
+    const double a = scan.BeamAngle(i);
+    const bool hit = r <= usable;
+    const double d = hit ? r : std::isinf(r) ? std::min(usable, options_.no_return_clear_range_m) : usable;
+    if (d <= 0.0) continue;
+    const Vec2 end = scan.laser_pose.TransformPoint({d * std::cos(a), d * std::sin(a)});
+    points.integrate.emplace_back(end, hit);
+    if (hit) hits.push_back(end);
+  }
+  const std::size_t stride = (hits.size() + options_.max_match_points - 1) / options_.max_match_points;
+  for (std::size_t k = 0; k < hits.size(); k += std::max<std::size_t>(stride, 1)) points.match.push_back(hits[k]);
+  return points;
+}
+
+void RbpfSlam::Integrate(SlamParticle& particle, const ScanPoints& points) const {
+  const Vec2 origin = particle.pose.TransformPoint(points.origin);
+  for (const auto& [end, hit] : points.integrate) {
+    particle.map.IntegrateBeam(origin, particle.pose.TransformPoint(end), hit);
+  }
+}
+
+bool RbpfSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index) {
+  ValidateScan(scan);
+  ++stats_.scans_seen;
+  if (!started_) {
+    const ScanPoints points = PrepareScan(scan);
+    SlamParticle first{odometry_pose, 0.0, 0.0, TiledGrid(options_.grid), nullptr};
+    Integrate(first, points);
+    first.trajectory = ExtendTrajectory(nullptr, {scan_index, odometry_pose});
+    particles_.assign(options_.num_particles, first);
+    started_ = true;
+    last_odometry_ = last_received_odometry_ = odometry_pose;
+    ++stats_.scans_processed;
+    return true;
+  }
+  // The spread grows with every odometry increment, processed or not: several short moves are
+  // noisier than one long move of the same length.
+  pending_spread_ = OdometryMotionModel::Accumulate(
+      pending_spread_, motion_.Spread(last_received_odometry_.Between(odometry_pose)));
+  last_received_odometry_ = odometry_pose;
+  const Pose2D delta = last_odometry_.Between(odometry_pose);
+  if (std::hypot(delta.x_m, delta.y_m) < options_.linear_update_m &&
+      std::abs(NormalizeAngle(delta.theta_rad)) < options_.angular_update_rad) {
+    return false;
+  }
+  const ScanPoints points = PrepareScan(scan);
+  const StepSpread spread = pending_spread_;
+  pending_spread_ = StepSpread{};
+
+  // Front end: one wide search on the best particle's map turns the odometry step into a scan-
+  // corrected step; every particle then searches a narrow window around its own corrected step.
+  const SlamParticle& best = particles_[BestIndex()];
+  const Pose2D best_prediction = best.pose.Compose(delta);
+  const MatchResult wide = matcher_.Match(best.map, points.match, best_prediction,
+                                          matcher_.WideWindow(spread), best_prediction, spread);
+  const Pose2D step = wide.status == MatchResult::Status::kMatched ? best.pose.Between(wide.pose) : delta;
+
+  for (SlamParticle& p : particles_) {
+    const Pose2D prior = OdometryMotionModel::Sample(p.pose, delta, spread, rng_);
+    const MatchResult r =
+        matcher_.Match(p.map, points.match, p.pose.Compose(step), matcher_.NarrowWindow(), prior, spread);
+    p.pose = r.pose;
+    const double l = options_.likelihood_gain * r.log_likelihood;
+    p.log_weight += l;
+    p.log_score += l;
+    switch (r.status) {
+      case MatchResult::Status::kMatched: ++stats_.matches; break;
+      case MatchResult::Status::kWeak: ++stats_.weak_matches; break;
+      case MatchResult::Status::kRejectedJump: ++stats_.rejected_jumps; break;
+    }
+  }
+  FinishStep(&points, scan_index);
+  last_odometry_ = odometry_pose;
+  ++stats_.scans_processed;
+  return true;
+}
+
+void RbpfSlam::ReweightParticles(const std::function<double(const SlamParticle&)>& log_likelihood) {
+  for (SlamParticle& p : particles_) {
+    const double l = log_likelihood(p);
+    p.log_weight += l;
+    p.log_score += l;
+  }
+  FinishStep(nullptr, 0);
+}
+
+double RbpfSlam::Neff() const {
+  if (particles_.empty()) return 0.0;
+  double max_lw = -std::numeric_limits<double>::infinity();
+  for (const SlamParticle& p : particles_) max_lw = std::max(max_lw, p.log_weight);
+  double sum = 0.0, sum2 = 0.0;
+  for (const SlamParticle& p : particles_) {
+    const double w = std::exp(p.log_weight - max_lw);
+    sum += w, sum2 += w * w;
+  }
+  return sum * sum / sum2;
+}
+
+int RbpfSlam::BestIndex() const {
+  int best = 0;
+  for (int i = 1; i < static_cast<int>(particles_.size()); ++i) {
+    const SlamParticle& p = particles_[i];
+    const SlamParticle& b = particles_[best];
+    if (p.log_weight > b.log_weight || (p.log_weight == b.log_weight && p.log_score > b.log_score)) best = i;
+  }
+  return best;
+}
+
+std::size_t RbpfSlam::MapMemoryBytes() const {
+  std::unordered_set<const TiledGrid::Tile*> tiles;
+  for (const SlamParticle& p : particles_) p.map.CollectTiles(&tiles);
+  return tiles.size() * sizeof(TiledGrid::Tile);
+}
+
+const SlamParticle& RbpfSlam::BestParticle() const {
+  if (particles_.empty()) throw std::logic_error("RbpfSlam::BestParticle: no scan was added yet");
+  return particles_[BestIndex()];
+}
+
+void RbpfSlam::FinishStep(const ScanPoints* scan, int scan_index) {
+  const int n = static_cast<int>(particles_.size());
+  stats_.last_neff = Neff();
+  std::vector<int> parents(n);
+  for (int i = 0; i < n; ++i) parents[i] = i;
+  const bool resample = stats_.last_neff < options_.resample_neff_ratio * n;
+  if (resample) {
+    // Systematic (low-variance) resampling.
+    double max_lw = -std::numeric_limits<double>::infinity();
+    for (const SlamParticle& p : particles_) max_lw = std::max(max_lw, p.log_weight);
+    std::vector<double> cumulative(n);
+    double total = 0.0;
+    for (int i = 0; i < n; ++i) cumulative[i] = total += std::exp(particles_[i].log_weight - max_lw);
+    std::uniform_real_distribution<double> start(0.0, total / n);
+    double u = start(rng_);
+    int i = 0;
+    for (int k = 0; k < n; ++k, u += total / n) {
+      while (i < n - 1 && cumulative[i] < u) ++i;
+      parents[k] = i;
+    }
+    ++stats_.resamplings;
+  }
+  // The scan goes into each surviving parent's map once, before children share its tiles.
+  if (scan) {
+    std::vector<bool> done(n, false);
+    for (int parent : parents) {
+      if (done[parent]) continue;
+      done[parent] = true;
+      SlamParticle& p = particles_[parent];
+      Integrate(p, *scan);
+      p.trajectory = ExtendTrajectory(p.trajectory, {scan_index, p.pose});
+    }
+  }
+  if (resample) {
+    std::vector<SlamParticle> next;
+    next.reserve(n);
+    for (int parent : parents) {
+      next.push_back(particles_[parent]);
+      next.back().log_weight = 0.0;
+    }
+    particles_ = std::move(next);
+  }
+}
+
+}  // namespace doorplate_localization

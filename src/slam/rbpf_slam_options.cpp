@@ -1,0 +1,89 @@
+#include "doorplate_localization/slam/rbpf_slam_options.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace doorplate_localization {
+namespace {
+
+// One option: where it lives in RbpfSlamOptions, as a double or as an integer.
+struct Field {
+  const char* name;
+  double* (*real)(RbpfSlamOptions&);
+  int* (*whole)(RbpfSlamOptions&);
+};
+
+using O = RbpfSlamOptions;
+const Field kFields[] = {
+    {"num_particles", nullptr, [](O& o) { return &o.num_particles; }},
+    {"linear_update_m", [](O& o) { return &o.linear_update_m; }, nullptr},
+    {"angular_update_rad", [](O& o) { return &o.angular_update_rad; }, nullptr},
+    {"resample_neff_ratio", [](O& o) { return &o.resample_neff_ratio; }, nullptr},
+    {"likelihood_gain", [](O& o) { return &o.likelihood_gain; }, nullptr},
+    {"max_usable_range_m", [](O& o) { return &o.max_usable_range_m; }, nullptr},
+    {"no_return_clear_range_m", [](O& o) { return &o.no_return_clear_range_m; }, nullptr},
+    {"grid.resolution_m", [](O& o) { return &o.grid.resolution_m; }, nullptr},
+    {"grid.hit_log_odds", [](O& o) { return &o.grid.hit_log_odds; }, nullptr},
+    {"grid.miss_log_odds", [](O& o) { return &o.grid.miss_log_odds; }, nullptr},
+    {"grid.min_log_odds", [](O& o) { return &o.grid.min_log_odds; }, nullptr},
+    {"grid.max_log_odds", [](O& o) { return &o.grid.max_log_odds; }, nullptr},
+    {"grid.occupied_log_odds", [](O& o) { return &o.grid.occupied_log_odds; }, nullptr},
+    {"grid.cleared_log_odds", [](O& o) { return &o.grid.cleared_log_odds; }, nullptr},
+    {"grid.distance_field_radius_m", [](O& o) { return &o.grid.distance_field_radius_m; }, nullptr},
+    {"matcher.field_sigma_m", [](O& o) { return &o.matcher.field_sigma_m; }, nullptr},
+    {"matcher.likelihood_floor", [](O& o) { return &o.matcher.likelihood_floor; }, nullptr},
+    {"matcher.search_sigmas", [](O& o) { return &o.matcher.search_sigmas; }, nullptr},
+    {"matcher.min_search_linear_m", [](O& o) { return &o.matcher.min_search_linear_m; }, nullptr},
+    {"matcher.max_search_linear_m", [](O& o) { return &o.matcher.max_search_linear_m; }, nullptr},
+    {"matcher.min_search_angular_rad", [](O& o) { return &o.matcher.min_search_angular_rad; }, nullptr},
+    {"matcher.max_search_angular_rad", [](O& o) { return &o.matcher.max_search_angular_rad; }, nullptr},
+    {"matcher.search_angular_step_rad", [](O& o) { return &o.matcher.search_angular_step_rad; }, nullptr},
+    {"matcher.matched_distance_m", [](O& o) { return &o.matcher.matched_distance_m; }, nullptr},
+    {"matcher.min_matched_fraction", [](O& o) { return &o.matcher.min_matched_fraction; }, nullptr},
+    {"matcher.jump_guard_margin_m", [](O& o) { return &o.matcher.jump_guard_margin_m; }, nullptr},
+    {"matcher.jump_guard_margin_rad", [](O& o) { return &o.matcher.jump_guard_margin_rad; }, nullptr},
+    {"matcher.score_to_log_likelihood", [](O& o) { return &o.matcher.score_to_log_likelihood; }, nullptr},
+    {"matcher.prior_huber_sigmas", [](O& o) { return &o.matcher.prior_huber_sigmas; }, nullptr},
+    {"motion.trans_stddev_m_per_m", [](O& o) { return &o.motion.trans_stddev_m_per_m; }, nullptr},
+    {"motion.trans_stddev_m_per_rad", [](O& o) { return &o.motion.trans_stddev_m_per_rad; }, nullptr},
+    {"motion.rot_stddev_rad_per_m", [](O& o) { return &o.motion.rot_stddev_rad_per_m; }, nullptr},
+    {"motion.rot_stddev_rad_per_rad", [](O& o) { return &o.motion.rot_stddev_rad_per_rad; }, nullptr},
+    {"motion.min_translation_m", [](O& o) { return &o.motion.min_translation_m; }, nullptr},
+    {"max_match_points", nullptr, [](O& o) { return &o.max_match_points; }},
+    {"matcher.refine_halvings", nullptr, [](O& o) { return &o.matcher.refine_halvings; }},
+};
+
+const Field& Find(const std::string& name) {
+  for (const Field& f : kFields) {
+    if (name == f.name) return f;
+  }
+  throw std::invalid_argument("unknown SLAM option '" + name + "'");
+}
+
+}  // namespace
+
+std::vector<std::string> RbpfSlamOptionNames() {
+  std::vector<std::string> names;
+  for (const Field& f : kFields) names.push_back(f.name);
+  return names;
+}
+
+void SetRbpfSlamOption(const std::string& name, double value, RbpfSlamOptions* options) {
+  const Field& f = Find(name);
+  if (f.real) {
+    *f.real(*options) = value;
+    return;
+  }
+  if (value != std::floor(value) || std::abs(value) > 1e9) {
+    throw std::invalid_argument("SLAM option '" + name + "' must be a whole number, got " + std::to_string(value));
+  }
+  *f.whole(*options) = static_cast<int>(value);
+}
+
+double GetRbpfSlamOption(const std::string& name, const RbpfSlamOptions& options) {
+  const Field& f = Find(name);
+  RbpfSlamOptions copy = options;
+  return f.real ? *f.real(copy) : *f.whole(copy);
+}
+
+}  // namespace doorplate_localization
