@@ -1,5 +1,7 @@
 // `doorplate_eval ocr`: the text-reading experiment (paper Table I, Figure 12) on one world file.
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 
@@ -80,6 +82,12 @@ int RunOcrCommand(const std::vector<std::string>& args, const std::string& comma
   options.max_pass_time_s = parsed.Number("max-pass-seconds");
   if (options.max_pass_time_s <= 0) throw UsageError("ocr: --max-pass-seconds must be > 0");
 
+  if (!common.json_path.empty()) {
+    const std::filesystem::path parent = std::filesystem::path(common.json_path).parent_path();
+    if (!parent.empty() && !std::filesystem::is_directory(parent)) {
+      throw UsageError("ocr: --json: folder " + parent.string() + " does not exist");
+    }
+  }
   const World world = LoadWorldFile(common.world_path);
   const OcrEvalResult result = RunOcrEval(world, options);
   PrintSummary(result, options);
