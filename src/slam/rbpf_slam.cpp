@@ -19,6 +19,7 @@ const RbpfSlamOptions& Validated(const RbpfSlamOptions& o) {
   if (!(o.max_usable_range_m > 0)) fail("max_usable_range_m: must be > 0");
   if (!(o.no_return_clear_range_m >= 0)) fail("no_return_clear_range_m: must be >= 0");
   if (o.max_match_points < 3) fail("max_match_points: must be >= 3");
+  if (!(o.mean_trajectory_radius_m >= 0)) fail("mean_trajectory_radius_m: must be >= 0");
   return o;
 }
 
@@ -157,6 +158,35 @@ std::size_t RbpfSlam::MapMemoryBytes() const {
   std::unordered_set<const TiledGrid::Tile*> tiles;
   for (const SlamParticle& p : particles_) p.map.CollectTiles(&tiles);
   return tiles.size() * sizeof(TiledGrid::Tile);
+}
+
+std::vector<TrajectoryPoint> RbpfSlam::MeanTrajectory() const {
+  const std::vector<TrajectoryPoint> best = BestTrajectory();
+  double max_lw = -std::numeric_limits<double>::infinity();
+  for (const SlamParticle& p : particles_) max_lw = std::max(max_lw, p.log_weight);
+  std::vector<double> sx(best.size(), 0.0), sy(best.size(), 0.0), sc(best.size(), 0.0), ss(best.size(), 0.0);
+  double total = 0.0;
+  const double radius2 = options_.mean_trajectory_radius_m * options_.mean_trajectory_radius_m;
+  for (const SlamParticle& p : particles_) {
+    const std::vector<TrajectoryPoint> history = UnrollTrajectory(p.trajectory);
+    if (history.size() != best.size()) continue;
+    double d2 = 0.0;
+    for (std::size_t i = 0; i < best.size(); ++i) {
+      d2 += std::pow(history[i].pose.x_m - best[i].pose.x_m, 2) + std::pow(history[i].pose.y_m - best[i].pose.y_m, 2);
+    }
+    if (d2 > radius2 * best.size()) continue;  // another mode
+    const double w = std::exp(p.log_weight - max_lw);
+    total += w;
+    for (std::size_t i = 0; i < best.size(); ++i) {
+      sx[i] += w * history[i].pose.x_m, sy[i] += w * history[i].pose.y_m;
+      sc[i] += w * std::cos(history[i].pose.theta_rad), ss[i] += w * std::sin(history[i].pose.theta_rad);
+    }
+  }
+  std::vector<TrajectoryPoint> mean = best;  // the best particle is always in its own mode: total > 0
+  for (std::size_t i = 0; i < mean.size(); ++i) {
+    mean[i].pose = {sx[i] / total, sy[i] / total, std::atan2(ss[i], sc[i])};
+  }
+  return mean;
 }
 
 const SlamParticle& RbpfSlam::BestParticle() const {

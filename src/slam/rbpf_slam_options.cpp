@@ -22,6 +22,7 @@ const Field kFields[] = {
     {"likelihood_gain", [](O& o) { return &o.likelihood_gain; }, nullptr},
     {"max_usable_range_m", [](O& o) { return &o.max_usable_range_m; }, nullptr},
     {"no_return_clear_range_m", [](O& o) { return &o.no_return_clear_range_m; }, nullptr},
+    {"mean_trajectory_radius_m", [](O& o) { return &o.mean_trajectory_radius_m; }, nullptr},
     {"grid.resolution_m", [](O& o) { return &o.grid.resolution_m; }, nullptr},
     {"grid.hit_log_odds", [](O& o) { return &o.grid.hit_log_odds; }, nullptr},
     {"grid.miss_log_odds", [](O& o) { return &o.grid.miss_log_odds; }, nullptr},

@@ -1,6 +1,7 @@
 // doorplate_map_log: maps a CARMEN log (FLASER lines; odometry from the second pose triple) offline with
 // the same RbpfSlam the mapping nodelet runs, and writes the real-log protocol's outputs:
-//   DIR/trajectory.txt        `scan_index x y theta` per processed scan (the best particle's history)
+//   DIR/trajectory.txt        `scan_index x y theta` per processed scan: the posterior mean trajectory
+//                              (RbpfSlam::MeanTrajectory); DIR/trajectory_best.txt: the best particle's
 //   DIR/map.pgm, DIR/map.yaml  the best particle's map, map_server format
 //   DIR/map_trajectory.png     the map with the trajectory drawn over it
 // and a progress line on stderr every few seconds.
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -157,8 +159,12 @@ int main(int argc, char** argv) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     const auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+    std::filesystem::create_directories(args.out);  // fails early, before a long run, if it cannot
     const dl::CarmenLog log = dl::ReadCarmenLogFile(args.log);
-    if (log.scans.empty()) throw std::runtime_error(args.log + ": no FLASER lines");
+    if (log.scans.empty()) {
+      const bool gz = args.log.size() > 3 && args.log.compare(args.log.size() - 3, 3, ".gz") == 0;
+      throw std::runtime_error(args.log + ": no FLASER lines" + (gz ? " (a .gz log must be unpacked first)" : ""));
+    }
     dl::RbpfSlam slam(args.options);
     double next_progress = args.progress_s;
     for (const dl::CarmenScan& record : log.scans) {
@@ -174,8 +180,9 @@ int main(int argc, char** argv) {
       }
     }
     const dl::SlamParticle& best = slam.BestParticle();
-    const std::vector<dl::TrajectoryPoint> trajectory = slam.BestTrajectory();
+    const std::vector<dl::TrajectoryPoint> trajectory = slam.MeanTrajectory();
     WriteTrajectory(trajectory, args.out + "/trajectory.txt");
+    WriteTrajectory(slam.BestTrajectory(), args.out + "/trajectory_best.txt");
     if (args.dump_particles) {
       for (std::size_t i = 0; i < slam.particles().size(); ++i) {
         WriteTrajectory(dl::UnrollTrajectory(slam.particles()[i].trajectory),

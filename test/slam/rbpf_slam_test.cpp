@@ -124,16 +124,54 @@ TEST(RbpfSlam, MapsASliceOfTheRealIntelLogWithinTheMeasuredError) {
   RbpfSlam slam(options);
   for (const CarmenScan& s : log.scans) slam.AddScan(s.scan, s.odometry_pose, s.scan_index);
   std::vector<Vec2> estimate, reference, odometry;
-  for (const TrajectoryPoint& p : slam.BestTrajectory()) {
+  for (const TrajectoryPoint& p : slam.MeanTrajectory()) {
     estimate.push_back(p.pose.Position());
     reference.push_back(reference_all[p.scan_index]);
     odometry.push_back(log.scans[p.scan_index].odometry_pose.Position());
   }
   EXPECT_GT(estimate.size(), 110u);
-  // Measured on this slice with 10 particles: 0.06-0.19 m over filter seeds 1-10 (0.087 m for seed
-  // 1); odometry alone: 4.5 m.
-  EXPECT_LT(AbsoluteTrajectoryError(estimate, reference), 0.3);
+  // Measured on this slice with 10 particles (mean trajectory): 0.050-0.099 m over filter seeds 1-10
+  // (0.070 m for seed 1); odometry alone: 4.5 m.
+  EXPECT_LT(AbsoluteTrajectoryError(estimate, reference), 0.2);
   EXPECT_GT(AbsoluteTrajectoryError(odometry, reference), 3.0);
+}
+
+TEST(RbpfSlam, TheMeanTrajectoryIsTheWeightedMeanOfTheParticlesHistories) {
+  RbpfSlamOptions options = FewParticles(6);
+  options.mean_trajectory_radius_m = 1e6;  // one mode: every particle counts
+  RbpfSlam slam(options);
+  Pose2D odometry;
+  for (int i = 0; i < 5; ++i) {
+    const Pose2D truth{-1.5 + 0.6 * i, 0.1 * i, 0.05 * i};
+    odometry = {truth.x_m * 1.1, truth.y_m, truth.theta_rad};
+    slam.AddScan(test::Scan(test::Room(), truth), odometry, i);
+  }
+  double max_lw = -1e300;
+  for (const SlamParticle& p : slam.particles()) max_lw = std::max(max_lw, p.log_weight);
+  double sum_w = 0, sum_x = 0, sum_y = 0;
+  for (const SlamParticle& p : slam.particles()) {
+    const double w = std::exp(p.log_weight - max_lw);
+    sum_w += w, sum_x += w * p.pose.x_m, sum_y += w * p.pose.y_m;
+  }
+  const std::vector<TrajectoryPoint> mean = slam.MeanTrajectory();
+  const std::vector<TrajectoryPoint> best = slam.BestTrajectory();
+  ASSERT_EQ(mean.size(), best.size());
+  EXPECT_EQ(mean.back().scan_index, best.back().scan_index);
+  EXPECT_NEAR(mean.back().pose.x_m, sum_x / sum_w, 1e-9);
+  EXPECT_NEAR(mean.back().pose.y_m, sum_y / sum_w, 1e-9);
+}
+
+TEST(RbpfSlam, TheMeanTrajectoryLeavesOtherModesOut) {
+  RbpfSlamOptions options = FewParticles(6);
+  options.mean_trajectory_radius_m = 0.0;  // only histories identical to the best one
+  RbpfSlam slam(options);
+  for (int i = 0; i < 4; ++i) slam.AddScan(test::Scan(test::Room(), {-1.0 + 0.6 * i, 0, 0}), {-1.0 + 0.6 * i, 0, 0}, i);
+  const std::vector<TrajectoryPoint> mean = slam.MeanTrajectory();
+  const std::vector<TrajectoryPoint> best = slam.BestTrajectory();
+  for (std::size_t i = 0; i < best.size(); ++i) {
+    EXPECT_NEAR(mean[i].pose.x_m, best[i].pose.x_m, 1e-9);
+    EXPECT_NEAR(mean[i].pose.theta_rad, best[i].pose.theta_rad, 1e-9);
+  }
 }
 
 TEST(RbpfSlam, RejectsOptionsItCannotRun) {

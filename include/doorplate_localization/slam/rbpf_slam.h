@@ -1,8 +1,10 @@
 // Rao-Blackwellized particle filter SLAM (gmapping's design, Grisetti et al. 2007; the seed paper's
 // eqs. 5-6: p(x_1:t, m | z, u) = p(m | x_1:t, z) · p(x_1:t | z, u)). Each particle is a trajectory
 // hypothesis with its own log-odds map (eqs. 1-4). The proposal is a scan match against the
-// particle's own map, fused with the odometry prediction (scan_matcher.h); weights come from the scan
-// likelihood at the proposed pose; resampling happens when Neff drops below a threshold.
+// particle's own map with the odometry prediction as prior (scan_matcher.h), searched around a step
+// that one wide search on the best particle's map corrected first; weights come from the scan
+// likelihood at the proposed pose; resampling happens when Neff drops below a threshold. See
+// docs/slam.md for the choices and their measurements.
 // Maps are tiled and copy-on-write, trajectories are trees of shared nodes: resampling copies
 // pointers. Frames: the map frame is the odometry frame at the first scan. Units: metres, radians.
 #pragma once
@@ -29,6 +31,7 @@ struct RbpfSlamOptions {
   double max_usable_range_m = 30.0;    // longer beams only clear free space, up to here
   double no_return_clear_range_m = 10.0;  // beams without echo (+inf) clear free space up to here
   int max_match_points = 360;          // scan points used by the matcher (evenly subsampled)
+  double mean_trajectory_radius_m = 0.5;  // MeanTrajectory() averages histories this close to the best
   std::uint64_t seed = 1;
   TiledGridOptions grid;
   ScanMatcherOptions matcher;
@@ -72,6 +75,11 @@ class RbpfSlam {
   // The particle with the highest weight (ties: highest history score).
   const SlamParticle& BestParticle() const;
   std::vector<TrajectoryPoint> BestTrajectory() const { return UnrollTrajectory(BestParticle().trajectory); }
+  // The posterior mean of the trajectory: per processed scan, the weighted mean pose of the particles
+  // whose histories stay within mean_trajectory_radius_m (RMS) of the best particle's, i.e. of the
+  // best particle's mode (in a symmetric corridor other modes are not averaged in). It is the estimate
+  // with the least expected squared position error; the map stays the best particle's.
+  std::vector<TrajectoryPoint> MeanTrajectory() const;
   double Neff() const;
   // Bytes held by the tiles of all particles' maps, each shared tile counted once.
   std::size_t MapMemoryBytes() const;
