@@ -21,6 +21,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "cli_args.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/slam/carmen_reader.h"
 #include "doorplate_localization/slam/rbpf_slam.h"
@@ -37,20 +38,11 @@ const char kUsage[] =
     "  --set linear_update_m=0.5 --set matcher.field_sigma_m=0.05 (see docs/slam.md for the names).\n"
     "  --dump-particles also writes every particle's trajectory (trajectory_particleI.txt).\n";
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+using doorplate_localization::tools::UsageError;
 
 double ParseNumber(const std::string& what, const std::string& text) {
-  std::size_t used = 0;
-  double value = 0.0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !std::isfinite(value)) throw UsageError(what + ": '" + text + "' is not a number");
-  return value;
+  if (const auto value = doorplate_localization::tools::ParseFiniteNumber(text)) return *value;
+  throw UsageError(what + ": '" + text + "' is not a number");
 }
 
 struct Args {

@@ -18,6 +18,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "cli_args.h"
 #include "doorplate_localization/sim/camera_renderer.h"
 #include "doorplate_localization/sim/laser_simulator.h"
 #include "doorplate_localization/sim/top_down_view.h"
@@ -45,22 +46,11 @@ struct Args {
   int benchmark_frames = 0;
 };
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+using doorplate_localization::tools::UsageError;
 
 double ParseNumber(const std::string& option, const std::string& text) {
-  std::size_t used = 0;
-  double value = 0.0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !std::isfinite(value)) {
-    throw UsageError(option + ": '" + text + "' is not a number");
-  }
-  return value;
+  if (const auto value = doorplate_localization::tools::ParseFiniteNumber(text)) return *value;
+  throw UsageError(option + ": '" + text + "' is not a number");
 }
 
 Args ParseArgs(int argc, char** argv) {

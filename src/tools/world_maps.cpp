@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "cli_args.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/sim/ground_truth_maps.h"
 #include "doorplate_localization/sim/world_loader.h"
@@ -28,22 +29,12 @@ struct Args {
   double laser_height_m = NAN;  // NaN: the world's laser mount height
 };
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+using doorplate_localization::tools::UsageError;
 
 double ParsePositive(const std::string& option, const std::string& text) {
-  std::size_t used = 0;
-  double value = 0.0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !std::isfinite(value) || value <= 0.0) {
-    throw UsageError(option + ": '" + text + "' is not a number > 0");
-  }
-  return value;
+  const auto value = doorplate_localization::tools::ParseFiniteNumber(text);
+  if (!value || *value <= 0.0) throw UsageError(option + ": '" + text + "' is not a number > 0");
+  return *value;
 }
 
 Args ParseArgs(int argc, char** argv) {
