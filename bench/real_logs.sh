@@ -4,7 +4,7 @@
 # time and peak RSS (/usr/bin/time -v). Writes docs/results/real-logs.md (a table beside upstream
 # gmapping's figures, parsed from the baselines README) and a picture of each log's map and trajectory
 # (seed 1) in docs/results/real-logs/. Runs one SLAM at a time, niced.
-# Usage: bench/real_logs.sh [BUILD_DIR] [--logs "intel aces freiburg-079 csail"] [--seeds "1 2 3"]
+# Usage: bash bench/real_logs.sh [BUILD_DIR] [--logs "intel aces freiburg-079 csail"] [--seeds "1 2 3"]
 #        [--work DIR] [--no-doc] [--doc-only]   (--doc-only: rewrite the doc from WORK/results.tsv)
 set -euo pipefail
 repo="$(cd "$(dirname "$0")/.." && pwd)"

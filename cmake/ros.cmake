@@ -14,7 +14,7 @@ add_library(doorplate_nodelets
 find_package(cv_bridge REQUIRED)
 find_library(CV_BRIDGE_LIBRARY cv_bridge REQUIRED)
 target_include_directories(doorplate_nodelets PUBLIC include PRIVATE ${catkin_INCLUDE_DIRS})
-target_include_directories(doorplate_nodelets PUBLIC ${cv_bridge_INCLUDE_DIRS})
+target_include_directories(doorplate_nodelets PRIVATE ${cv_bridge_INCLUDE_DIRS})
 target_link_libraries(doorplate_nodelets doorplate_sim doorplate_behaviour ${catkin_LIBRARIES})
 target_link_libraries(doorplate_nodelets doorplate_text ${CV_BRIDGE_LIBRARY})
 add_dependencies(doorplate_nodelets ${PROJECT_NAME}_generate_messages_cpp)

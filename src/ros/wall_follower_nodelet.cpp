@@ -1,7 +1,9 @@
-// WallFollowerNodelet: corridor following with the laser (paper Sec. 3.2) as a thin nodelet over
-// WallFollower. Subscribes scan (sensor_msgs/LaserScan, any frame with a tf to base_link); publishes
-// cmd_vel (geometry_msgs/Twist), ~state (std_msgs/String, latched: following | no_wall | end_reached |
-// disabled | no_valid_scan) and ~corridor_width (std_msgs/Float32, metres, when both walls are seen).
+// WallFollowerNodelet: corridor following with the laser (paper Sec. 3.2-3.4) as a thin nodelet over
+// WallFollower (~mode follow) or CorridorSweep (~mode sweep / patrol, which also need tf odom→base_link to
+// measure the turn). Subscribes scan (sensor_msgs/LaserScan, any frame with a tf to base_link); publishes
+// cmd_vel (geometry_msgs/Twist), ~state (std_msgs/String, latched: follow mode following | no_wall |
+// end_reached; sweep modes follow_out | turn_around | follow_back | done; any mode disabled |
+// no_valid_scan) and ~corridor_width (std_msgs/Float32, metres, when both walls are seen).
 // Service ~enable (std_srvs/SetBool) starts and stops driving. Parameters: wall_follower_options.h.
 #include <mutex>
 
@@ -30,6 +32,7 @@ class WallFollowerNodelet : public nodelet::Nodelet {
     try {
       options_ = LoadWallFollowerOptions(pnh);
       follower_ = std::make_unique<WallFollower>(options_.follower);
+      if (options_.mode != CorridorDriveMode::kFollow) sweep_ = std::make_unique<CorridorSweep>(options_.sweep);
     } catch (const std::exception& e) {
       NODELET_FATAL("%s", e.what());
       throw;
@@ -59,6 +62,7 @@ class WallFollowerNodelet : public nodelet::Nodelet {
     // validate → convert → core → publish
     std::string problem = ValidateScan(*scan);
     double yaw_in_base = 0.0;
+    Pose2D odom_pose;
     if (problem.empty()) {
       try {
         const auto tf = tf_buffer_.lookupTransform(options_.base_frame_id, scan->header.frame_id, scan->header.stamp,
@@ -68,6 +72,15 @@ class WallFollowerNodelet : public nodelet::Nodelet {
         problem = std::string("no tf from ") + scan->header.frame_id + " to " + options_.base_frame_id + ": " + e.what();
       }
     }
+    if (problem.empty() && sweep_) {
+      try {
+        const auto tf = tf_buffer_.lookupTransform(options_.odom_frame_id, options_.base_frame_id, scan->header.stamp,
+                                                   ros::Duration(0.1));
+        odom_pose = {tf.transform.translation.x, tf.transform.translation.y, tf2::getYaw(tf.transform.rotation)};
+      } catch (const tf2::TransformException& e) {
+        problem = std::string("no tf from ") + options_.base_frame_id + " to " + options_.odom_frame_id + ": " + e.what();
+      }
+    }
     if (!problem.empty()) {
       NODELET_ERROR_THROTTLE(2.0, "%s: %s; stopping", scan_sub_.getTopic().c_str(), problem.c_str());
       Stop("no_valid_scan");
@@ -75,10 +88,22 @@ class WallFollowerNodelet : public nodelet::Nodelet {
     }
     last_valid_scan_ = ros::Time::now();
     if (!enabled_) return;
-    const CorridorObservation obs =
-        follower_->Observe(scan->ranges, scan->angle_min + yaw_in_base, scan->angle_increment);
-    WallFollowState state;
-    const VelocityCommand cmd = follower_->Command(obs, &state);
+    CorridorObservation obs;
+    VelocityCommand cmd;
+    std::string state;
+    if (sweep_) {
+      if (sweep_->phase() == SweepPhase::kDone && options_.mode == CorridorDriveMode::kPatrol) sweep_->Reset();
+      cmd = sweep_->Step(scan->ranges, scan->angle_min + yaw_in_base, scan->angle_increment, odom_pose);
+      obs = sweep_->last_observation();
+      state = SweepPhaseName(sweep_->phase());
+    } else {
+      obs = follower_->Observe(scan->ranges, scan->angle_min + yaw_in_base, scan->angle_increment);
+      WallFollowState follow_state;
+      cmd = follower_->Command(obs, &follow_state);
+      state = follow_state == WallFollowState::kFollowing ? "following"
+              : follow_state == WallFollowState::kNoWall  ? "no_wall"
+                                                          : "end_reached";
+    }
     geometry_msgs::Twist twist;
     twist.linear.x = cmd.linear_mps;
     twist.angular.z = cmd.angular_rps;
@@ -88,9 +113,7 @@ class WallFollowerNodelet : public nodelet::Nodelet {
       width.data = static_cast<float>(obs.width_m);
       width_pub_.publish(width);
     }
-    PublishState(state == WallFollowState::kFollowing ? "following"
-                 : state == WallFollowState::kNoWall  ? "no_wall"
-                                                      : "end_reached");
+    PublishState(state);
   }
 
   void OnWatchdog(const ros::TimerEvent&) {
@@ -119,6 +142,7 @@ class WallFollowerNodelet : public nodelet::Nodelet {
 
   WallFollowerNodeOptions options_;
   std::unique_ptr<WallFollower> follower_;
+  std::unique_ptr<CorridorSweep> sweep_;  // sweep and patrol modes
   tf2_ros::Buffer tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   ros::Publisher cmd_pub_, state_pub_, width_pub_;

@@ -32,7 +32,15 @@ WallFollowerNodeOptions LoadWallFollowerOptions(const ros::NodeHandle& nh) {
   RequireParam(f.side_max_range_m > f.wall_distance_m, nh, "side_max_range_m", "> wall_distance_m",
                f.side_max_range_m);
   f.front_half_width_m = ReadPositive(nh, "front_half_width_m", f.front_half_width_m);
+  const std::string mode = ReadParam(nh, "mode", std::string("follow"));
+  RequireParam(mode == "follow" || mode == "sweep" || mode == "patrol", nh, "mode", "follow, sweep or patrol", mode);
+  o.mode = mode == "follow" ? CorridorDriveMode::kFollow
+           : mode == "sweep" ? CorridorDriveMode::kSweep
+                             : CorridorDriveMode::kPatrol;
+  o.sweep.follower = f;
+  o.sweep.turn_speed_rps = ReadPositive(nh, "turn_speed_rps", o.sweep.turn_speed_rps);
   o.base_frame_id = ReadFrameParam(nh, "base_frame_id", o.base_frame_id);
+  o.odom_frame_id = ReadFrameParam(nh, "odom_frame_id", o.odom_frame_id);
   o.scan_timeout_s = ReadPositive(nh, "scan_timeout_s", o.scan_timeout_s);
   o.enabled = ReadParam(nh, "enabled", o.enabled);
   return o;

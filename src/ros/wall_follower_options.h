@@ -5,13 +5,22 @@
 
 #include <ros/node_handle.h>
 
+#include "doorplate_localization/behaviour/corridor_sweep.h"
 #include "doorplate_localization/behaviour/wall_follower.h"
 #include "doorplate_localization/ros/param_reader.h"
 
 namespace doorplate_localization {
 
+// What the nodelet drives: "follow" one wall to the corridor's end and stop; "sweep" the paper's mapping
+// path (follow out, turn around, follow the other wall back, stop); "patrol" sweep again and again (the
+// search strategy of global localization and long runs).
+enum class CorridorDriveMode { kFollow, kSweep, kPatrol };
+
 struct WallFollowerNodeOptions {
   WallFollowerOptions follower;      // ~wall_side, ~wall_distance_m, ~cruise_speed_mps, ... (same names)
+  CorridorDriveMode mode = CorridorDriveMode::kFollow;  // ~mode: follow | sweep | patrol
+  CorridorSweepOptions sweep;        // sweep.follower = follower; ~turn_speed_rps
+  std::string odom_frame_id = "odom";  // sweep/patrol measure the turn with the odom→base_link yaw
   std::string base_frame_id = "base_link";
   double scan_timeout_s = 0.5;       // no valid scan for this long (ROS time): publish a stop
   bool enabled = true;               // ~enabled: start driving at once (else wait for ~enable)

@@ -62,6 +62,7 @@ struct SymmetricCorridor {
   double width_m = 2.0;
   double period_m = 4.0;
   std::vector<double> door_x;  // west edge of each door
+  OccupancyGrid occupancy;
   std::shared_ptr<LocalizationGrid> grid;
   std::shared_ptr<TextMap> text_map;
 
@@ -99,6 +100,7 @@ inline SymmetricCorridor MakeSymmetricCorridor(double length_m = 40.0, double wi
     map->landmarks.push_back(north);
   }
   c.grid = std::make_shared<LocalizationGrid>(g);
+  c.occupancy = std::move(g);
   c.text_map = map;
   return c;
 }
