@@ -2,7 +2,9 @@
 // Topics (relative to the nodelet's namespace): publishes /clock, scan, odom, base_pose_ground_truth,
 // camera/image_raw + camera/camera_info (rendered only while subscribed), tf odom -> base_link (and
 // map -> odom from the true pose if ~publish_ground_truth_tf), static tf base_link -> laser and
-// base_link -> camera_link -> camera_optical; subscribes cmd_vel. Parameters: corridor_sim_options.h.
+// base_link -> camera_link -> camera_optical; subscribes cmd_vel and ~teleport (geometry_msgs/Pose2D: moves
+// the robot there at once, in the world frame, metres and radians — a kidnapping; odometry does not see it).
+// Parameters: corridor_sim_options.h.
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -11,6 +13,7 @@
 #include <optional>
 #include <thread>
 
+#include <geometry_msgs/Pose2D.h>
 #include <geometry_msgs/Twist.h>
 #include <nodelet/nodelet.h>
 #include <pluginlib/class_list_macros.hpp>
@@ -80,6 +83,7 @@ class CorridorSimNodelet : public nodelet::Nodelet {
     image_pub_ = nh.advertise<sensor_msgs::Image>("camera/image_raw", 2);
     info_pub_ = nh.advertise<sensor_msgs::CameraInfo>("camera/camera_info", 2);
     cmd_sub_ = nh.subscribe("cmd_vel", 10, &CorridorSimNodelet::OnCmdVel, this);
+    teleport_sub_ = getPrivateNodeHandle().subscribe("teleport", 1, &CorridorSimNodelet::OnTeleport, this);
     tf_ = std::make_unique<tf2_ros::TransformBroadcaster>();
     static_tf_ = std::make_unique<tf2_ros::StaticTransformBroadcaster>();
     PublishStaticTransforms();
@@ -99,6 +103,18 @@ class CorridorSimNodelet : public nodelet::Nodelet {
     std::lock_guard<std::mutex> lock(mutex_);
     sim_->SetCommand(msg->linear.x, msg->angular.z);
     last_cmd_time_s_ = sim_->time_s();
+  }
+
+  void OnTeleport(const geometry_msgs::Pose2D::ConstPtr& msg) {
+    if (!std::isfinite(msg->x) || !std::isfinite(msg->y) || !std::isfinite(msg->theta)) {
+      NODELET_ERROR("%s: ignoring a non-finite pose x=%f y=%f theta=%f", teleport_sub_.getTopic().c_str(), msg->x,
+                    msg->y, msg->theta);
+      return;
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    sim_->Teleport({msg->x, msg->y, msg->theta});
+    NODELET_WARN("%s: robot teleported to (%.2f, %.2f, %.1f deg)", teleport_sub_.getTopic().c_str(), msg->x, msg->y,
+                 msg->theta * 180.0 / M_PI);
   }
 
   void PublishStaticTransforms() {
@@ -200,7 +216,7 @@ class CorridorSimNodelet : public nodelet::Nodelet {
   double turned_rad_ = 0.0;  // sum of |yaw change| of the true pose, for the odometry variance
   std::optional<RateGate> scan_gate_, odom_gate_, camera_gate_;
   ros::Publisher clock_pub_, scan_pub_, odom_pub_, truth_pub_, image_pub_, info_pub_;
-  ros::Subscriber cmd_sub_;
+  ros::Subscriber cmd_sub_, teleport_sub_;
   std::unique_ptr<tf2_ros::TransformBroadcaster> tf_;
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_tf_;
   std::atomic<bool> stop_{false};

@@ -21,6 +21,17 @@ CorridorSimOptions LoadCorridorSimOptions(ros::NodeHandle& private_nh) {
     throw ParameterError(nh.resolveName("world") + " = '" + o.world_file + "' cannot be used: " + e.what());
   }
 
+  // The robot's start: the world's unless overridden (e.g. to start a localization run somewhere else).
+  Pose2D& start = o.world.start_pose;
+  start.x_m = ReadParam(nh, "start_x_m", start.x_m);
+  start.y_m = ReadParam(nh, "start_y_m", start.y_m);
+  const double start_theta_deg = ReadParam(nh, "start_theta_deg", start.theta_rad * 180.0 / M_PI);
+  for (const auto& [name, value] : {std::pair<const char*, double>{"start_x_m", start.x_m},
+                                    {"start_y_m", start.y_m}, {"start_theta_deg", start_theta_deg}}) {
+    RequireParam(std::isfinite(value), nh, name, "finite", value);
+  }
+  start.theta_rad = NormalizeAngle(start_theta_deg * M_PI / 180.0);
+
   const int seed = ReadParam(nh, "seed", static_cast<int>(o.simulator.seed));
   RequireParam(seed >= 0, nh, "seed", ">= 0", seed);
   o.simulator.seed = static_cast<std::uint64_t>(seed);

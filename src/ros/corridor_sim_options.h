@@ -15,7 +15,8 @@ namespace doorplate_localization {
 
 struct CorridorSimOptions {
   std::string world_file;           // ~world (required): the world YAML, docs/world-format.md
-  World world;                      // loaded from world_file; its sensor settings give the rates
+  World world;                      // loaded from world_file; its sensor settings give the rates; its
+                                    // start pose overridden by ~start_x_m, ~start_y_m, ~start_theta_deg
   SimulatorOptions simulator;       // ~seed, ~physics_step_s, ~max_linear_speed_mps, ~max_angular_speed_rps
   double real_time_factor = 1.0;    // sim seconds per wall second; 0 = as fast as possible
   bool publish_clock = true;        // publish /clock (run the graph with /use_sim_time true)
