@@ -1,9 +1,22 @@
 # ROS layer: thin nodelets over the core libraries, and message conversions.
+
+# The message conversions every nodelet and tool shares (scan and detection checks, planar poses, map -> odom,
+# grids, landmark markers, camera axes): a plain shared library, not a plugin. Nodelet libraries link it and
+# never each other (class_loader would attribute a linked library's plugins to the linking one).
+add_library(doorplate_ros_conversions
+  src/ros/scan_conversions.cpp
+  src/ros/pose_conversions.cpp
+  src/ros/map_conversions.cpp
+  src/ros/text_detection_conversions.cpp)
+target_include_directories(doorplate_ros_conversions PUBLIC include PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(doorplate_ros_conversions doorplate_maps ${catkin_LIBRARIES})
+add_dependencies(doorplate_ros_conversions ${PROJECT_NAME}_generate_messages_cpp)
+install(TARGETS doorplate_ros_conversions LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
+
 add_library(doorplate_nodelets
   src/ros/corridor_sim_nodelet.cpp
   src/ros/corridor_sim_options.cpp
   src/ros/sim_conversions.cpp
-  src/ros/scan_conversions.cpp
   src/ros/wall_follower_options.cpp
   src/ros/wall_follower_nodelet.cpp
   src/ros/text_conversions.cpp
@@ -15,7 +28,8 @@ find_package(cv_bridge REQUIRED)
 find_library(CV_BRIDGE_LIBRARY cv_bridge REQUIRED)
 target_include_directories(doorplate_nodelets PUBLIC include PRIVATE ${catkin_INCLUDE_DIRS})
 target_include_directories(doorplate_nodelets PRIVATE ${cv_bridge_INCLUDE_DIRS})
-target_link_libraries(doorplate_nodelets doorplate_sim doorplate_behaviour ${catkin_LIBRARIES})
+target_link_libraries(doorplate_nodelets doorplate_ros_conversions doorplate_sim doorplate_behaviour
+                      ${catkin_LIBRARIES})
 target_link_libraries(doorplate_nodelets doorplate_text ${CV_BRIDGE_LIBRARY})
 add_dependencies(doorplate_nodelets ${PROJECT_NAME}_generate_messages_cpp)
 install(TARGETS doorplate_nodelets LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
@@ -25,9 +39,12 @@ if(CATKIN_ENABLE_TESTING)
   target_include_directories(sim_conversions_test PRIVATE ${catkin_INCLUDE_DIRS})
   target_link_libraries(sim_conversions_test doorplate_nodelets GTest::gtest_main ${catkin_LIBRARIES})
 
-  catkin_add_gtest(scan_conversions_test test/ros/scan_conversions_test.cpp)
-  target_include_directories(scan_conversions_test PRIVATE ${catkin_INCLUDE_DIRS})
-  target_link_libraries(scan_conversions_test doorplate_nodelets GTest::gtest_main ${catkin_LIBRARIES})
+  # One test per source of doorplate_ros_conversions.
+  foreach(source scan_conversions pose_conversions map_conversions text_detection_conversions)
+    catkin_add_gtest(${source}_test test/ros/${source}_test.cpp)
+    target_include_directories(${source}_test PRIVATE ${catkin_INCLUDE_DIRS})
+    target_link_libraries(${source}_test doorplate_ros_conversions GTest::gtest_main ${catkin_LIBRARIES})
+  endforeach()
 
   catkin_add_gtest(text_conversions_test test/ros/text_conversions_test.cpp)
   target_include_directories(text_conversions_test PRIVATE ${catkin_INCLUDE_DIRS})
@@ -48,9 +65,17 @@ if(CATKIN_ENABLE_TESTING)
   target_link_libraries(text_extractor_nodelet_rostest doorplate_nodelets ${catkin_LIBRARIES})
 endif()
 
-# Tools that read ROS data (bags).
-add_executable(doorplate_run_report src/ros/tools/run_report.cpp)
-target_include_directories(doorplate_run_report PRIVATE ${catkin_INCLUDE_DIRS})
-target_link_libraries(doorplate_run_report doorplate_sim ${catkin_LIBRARIES})
-add_dependencies(doorplate_run_report ${PROJECT_NAME}_generate_messages_cpp)  # reads text_detections
-install(TARGETS doorplate_run_report RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+# Tools that read ROS data (bags): the report of a simulated mission (scripts/demo.sh).
+add_library(doorplate_mission_bags STATIC src/ros/tools/mission_bags.cpp)
+target_include_directories(doorplate_mission_bags PUBLIC include src/ros/tools PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(doorplate_mission_bags PUBLIC doorplate_common ${catkin_LIBRARIES})
+add_dependencies(doorplate_mission_bags ${PROJECT_NAME}_generate_messages_cpp)  # reads text_detections
+add_executable(doorplate_mission_report src/ros/tools/mission_report.cpp)
+target_link_libraries(doorplate_mission_report doorplate_mission_bags doorplate_eval_map doorplate_eval_lib
+                      doorplate_sim doorplate_maps opencv_imgcodecs)
+install(TARGETS doorplate_mission_report RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+if(CATKIN_ENABLE_TESTING)
+  catkin_add_gtest(mission_bags_test test/ros/mission_bags_test.cpp)
+  target_include_directories(mission_bags_test PRIVATE ${catkin_INCLUDE_DIRS})
+  target_link_libraries(mission_bags_test doorplate_mission_bags GTest::gtest_main ${catkin_LIBRARIES})
+endif()

@@ -7,6 +7,8 @@ add_library(doorplate_slam
   src/slam/rbpf_slam.cpp
   src/slam/rbpf_slam_options.cpp
   src/slam/scan_matcher.cpp
+  src/slam/text_slam.cpp
+  src/slam/text_slam_map.cpp
   src/slam/tiled_grid.cpp
   src/slam/trajectory_tree.cpp)
 target_include_directories(doorplate_slam PUBLIC include)
@@ -18,7 +20,7 @@ target_link_libraries(doorplate_map_log doorplate_slam doorplate_maps opencv_cor
 install(TARGETS doorplate_map_log RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(name carmen_reader correlative_search tiled_grid scan_matcher motion_model trajectory_tree rbpf_slam rbpf_slam_options)
+  foreach(name carmen_reader correlative_search tiled_grid scan_matcher motion_model trajectory_tree rbpf_slam rbpf_slam_options text_slam)
     doorplate_add_core_test(${name}_test test/slam/${name}_test.cpp doorplate_slam)
   endforeach()
 endif()

@@ -1,45 +1,87 @@
 #!/usr/bin/env bash
-# The main job: builds the package, then runs the simulated corridor demo headless on the paper's
-# 43.5 m corridor (launch/demo.launch) at 5x real time, and writes a report of the run to
-# results/demo/ (report.md, trajectory.png, camera_mid_run.png).
-# Usage: scripts/demo.sh [--world FILE] [--seed N] [--timeout-s S]
+# The main job: builds the package and runs the whole simulated mission headless on the paper's 43.5 m
+# corridor, at 5x real time, then writes a report to results/demo/:
+#   1. mapping (launch/mapping.launch): the robot sweeps the corridor (out along one wall, turn, back) while
+#      the RBPF SLAM maps it and the text extractor reads the plates; the maps are saved (map_server PGM +
+#      YAML and the text-landmark map) into results/demo/maps/;
+#   2. localization (launch/localization.launch): the robot is put somewhere else, unknown to the localizer;
+#      Text AMCL starts with global localization on the saved maps while the robot patrols until it has
+#      read plates and converged; then the patrol stops and the robot is sent to a room by number
+#      (go_to_room) and drives there;
+#   3. report (doorplate_mission_report): report.md with the plates read, the map's length / width
+#      accuracy and plate errors, the localization and go-to-room errors beside the paper's figures, a PNG
+#      of the map with plates and trajectories, and the commands that reproduce the full tables.
+# Usage: scripts/demo.sh [--world FILE] [--seed N] [--room TEXT] [--start "X Y THETA_DEG"] [--timeout-s S]
 set -euo pipefail
 repo="$(cd "$(dirname "$0")/.." && pwd)"
-world="$repo/worlds/paper_real_corridor.yaml"; seed=1; timeout_s=600
+world="$repo/worlds/paper_real_corridor.yaml"; seed=1; room=207; start="30.0 1.25 180"; timeout_s=900
+usage() { echo "usage: scripts/demo.sh [--world FILE] [--seed N] [--room TEXT] [--start \"X Y THETA_DEG\"] [--timeout-s S]" >&2; exit 2; }
 while [ $# -gt 0 ]; do
   case "$1" in
     --world) world="$2"; shift 2;;
     --seed) seed="$2"; shift 2;;
+    --room) room="$2"; shift 2;;
+    --start) start="$2"; shift 2;;
     --timeout-s) timeout_s="$2"; shift 2;;
-    *) echo "usage: scripts/demo.sh [--world FILE] [--seed N] [--timeout-s S]" >&2; exit 2;;
+    *) usage;;
   esac
 done
+read -r start_x start_y start_theta <<< "$start"
+[ -n "${start_theta:-}" ] || usage
 build="${DOORPLATE_BUILD:-$repo/build}"   # where scripts/build.sh builds
 bash "$repo/scripts/build.sh" "$build"
 source "$repo/scripts/env.sh" "$build"
-out="$repo/results/demo"; mkdir -p "$out"
-bag="$out/corridor_run.bag"; rm -f "$bag" "$bag.active"
-log="$out/roslaunch.log"
+out="$repo/results/demo"; maps="$out/maps"
+rm -rf "$out"; mkdir -p "$maps"
 
-echo "== demo: corridor following on $(basename "$world"), seed $seed (log: $log)"
-# 5x real time: fast, yet the control loop's latency stays a few simulated milliseconds.
-roslaunch doorplate_localization demo.launch world:="$world" seed:="$seed" real_time_factor:=5 \
-  bag:="$bag" > "$log" 2>&1 &
+launch_pid=""
+stop_launch() {
+  [ -n "$launch_pid" ] || return 0
+  kill -INT "$launch_pid" 2>/dev/null || true; wait "$launch_pid" 2>/dev/null || true; launch_pid=""
+}
+trap stop_launch EXIT
+
+# topic_value TOPIC: the latest value of a latched std_msgs/String topic ("" if none yet).
+topic_value() { timeout -k 1 5 rostopic echo -n 1 -p "$1" 2>/dev/null | tail -n 1 | cut -d, -f2- || true; }
+
+# wait_for TOPIC PATTERN WHAT LOG: polls the topic until its value matches the extended regex PATTERN.
+wait_for() {
+  local topic="$1" pattern="$2" what="$3" log="$4" deadline=$((SECONDS + timeout_s)) value=""
+  while [ $SECONDS -lt $deadline ]; do
+    value=$(topic_value "$topic")
+    if [[ "$value" =~ $pattern ]]; then echo "   $topic: $value"; return 0; fi
+    kill -0 "$launch_pid" 2>/dev/null || { echo "roslaunch exited early:"; tail -n 30 "$log"; exit 1; }
+    sleep 1
+  done
+  echo "$what did not happen within ${timeout_s} s ($topic: $value)"; tail -n 30 "$log"; exit 1
+}
+
+echo "== 1/3 mapping $(basename "$world") with text, seed $seed (log: $out/mapping.log)"
+roslaunch doorplate_localization mapping.launch world:="$world" seed:="$seed" slam_seed:="$seed" \
+  real_time_factor:=5 map_output_dir:="$maps" bag:="$out/mapping.bag" > "$out/mapping.log" 2>&1 &
 launch_pid=$!
-cleanup() { kill -INT "$launch_pid" 2>/dev/null || true; wait "$launch_pid" 2>/dev/null || true; }
-trap cleanup EXIT
+wait_for /corridor_follower/state '^done$' "the mapping sweep" "$out/mapping.log"
+rosservice call /slam_mapping/save_maps | tee "$out/save_maps.txt"
+grep -q "success: True" "$out/save_maps.txt" || { echo "saving the maps failed"; exit 1; }
+stop_launch
 
-# Wait for the robot to reach the corridor's end (the follower latches its state), at most timeout_s.
-deadline=$((SECONDS + timeout_s)); state=""
-while [ $SECONDS -lt $deadline ]; do
-  state=$(timeout 5 rostopic echo -n 1 -p /corridor_follower/state 2>/dev/null | tail -n 1 | cut -d, -f2 || true)
-  [ "$state" = "end_reached" ] && break
-  kill -0 "$launch_pid" 2>/dev/null || { echo "roslaunch exited early:"; tail -n 30 "$log"; exit 1; }
-  sleep 1
-done
-[ "$state" = "end_reached" ] || { echo "the robot did not reach the corridor end in ${timeout_s} s (state: $state)"; tail -n 30 "$log"; exit 1; }
-echo "== the robot reached the end of the corridor; stopping"
-cleanup; trap - EXIT
-"$build/devel/lib/doorplate_localization/doorplate_run_report" --bag "$bag" --world "$world" --out "$out" \
-  --title "Corridor following on $(basename "$world" .yaml), seed $seed"
+echo "== 2/3 localization from an unknown pose ($start_x, $start_y, $start_theta deg), then go to room $room"
+roslaunch doorplate_localization localization.launch world:="$world" seed:="$seed" filter_seed:="$seed" \
+  map_file:="$maps/map.yaml" text_map_file:="$maps/map.text_map.yaml" real_time_factor:=5 \
+  start_x_m:="$start_x" start_y_m:="$start_y" start_theta_deg:="$start_theta" bag:="$out/localization.bag" \
+  > "$out/localization.log" 2>&1 &
+launch_pid=$!
+wait_for /amcl/state '^converged' "global localization" "$out/localization.log"
+rosservice call /corridor_follower/enable false > /dev/null
+rostopic pub -1 /go_to_room std_msgs/String "data: '$room'" > /dev/null
+wait_for /go_to_room/status '^(arrived|refused|failed)' "reaching room $room" "$out/localization.log"
+status=$(topic_value /go_to_room/status)
+sleep 2  # let the recorder write the last messages
+stop_launch; trap - EXIT
+[[ "$status" == arrived* ]] || { echo "go to room $room: $status"; exit 1; }
+
+echo "== 3/3 report"
+"$build/devel/lib/doorplate_localization/doorplate_mission_report" --world "$world" --maps "$maps" \
+  --mapping-bag "$out/mapping.bag" --localization-bag "$out/localization.bag" --room "$room" --out "$out" \
+  --title "Simulated mission on $(basename "$world" .yaml), seed $seed"
 cat "$out/report.md"

@@ -13,10 +13,14 @@ PKGS=(
   libnodeletlib-dev libnodeletlib-tools pluginlib-dev libtf2-ros-dev libtf2-geometry-msgs-dev
   libsensor-msgs-dev libnav-msgs-dev libgeometry-msgs-dev libvisualization-msgs-dev libstd-srvs-dev
   librosbag-dev libcv-bridge-dev libimage-transport-dev
-  python3-sensor-msgs python3-nav-msgs python3-geometry-msgs python3-tf2-msgs python3-std-msgs
+  python3-sensor-msgs python3-nav-msgs python3-geometry-msgs python3-tf2-msgs python3-std-msgs python3-std-srvs python3-rosservice
   # core libraries
   libmrpt-dev libopencv-dev libtesseract-dev tesseract-ocr-eng libsuitesparse-dev libyaml-cpp-dev
   libeigen3-dev libgtest-dev
+  # fuzzing the file parsers (scripts/fuzz.sh): clang with libFuzzer and the sanitizer runtimes
+  clang-14 libclang-rt-14-dev llvm-14
+  # MRPT's sample datasets: the Málaga rawlog doorplate_map_rawlog maps
+  mrpt-common
 )
 if [ "${1:-}" = "--with-viz" ]; then
   PKGS+=(rviz xvfb xauth imagemagick)

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Builds the package and runs every test: the ROS-free core gtests, the message-conversion gtests and the
-# rostests (each starts its own ROS master). With --sanitize, also builds the core under ASan+UBSan in
-# <repo>/build-asan and runs the core tests there. Prints "N passed, N failed" and exits non-zero on any failure.
+# rostests (each starts its own ROS master), and the rviz screenshot test (test/viz; needs install_deps.sh
+# --with-viz). With --sanitize, also builds the core under ASan+UBSan in
+# <repo>/build-asan and runs the core tests there, then fuzzes every file parser for a bounded time
+# (scripts/fuzz.sh: clang-14, <repo>/build-fuzz; DOORPLATE_FUZZ_SECONDS per target, default 30).
+# Prints "N passed, N failed" and exits non-zero on any failure.
 # Usage: scripts/test.sh [--sanitize]
 set -uo pipefail
 repo="$(cd "$(dirname "$0")/.." && pwd)"
@@ -21,6 +24,14 @@ summary=$(/usr/bin/python3 "$repo/scripts/count_test_results.py" "$build/test_re
 echo "$summary" | sed '$d'
 read -r passed failed <<< "$(echo "$summary" | tail -n1)"
 
+echo "== rviz screenshot test (Xvfb, software GL): particles and text landmarks drawn"
+viz_summary=$(bash "$repo/test/viz/rviz_screenshot_test.sh" "$build" 2>&1 | tee /dev/stderr | tail -n1)
+if [[ "$viz_summary" =~ ^viz:\ ([0-9]+)\ passed,\ ([0-9]+)\ failed$ ]]; then
+  passed=$((passed + BASH_REMATCH[1])); failed=$((failed + BASH_REMATCH[2]))
+else
+  failed=$((failed + 1)); echo "[viz] did not run: $viz_summary"
+fi
+
 if [ "$sanitize" = 1 ]; then
   echo "== sanitizer run (ASan + UBSan) of the ROS-free core tests"
   asan="$repo/build-asan"
@@ -37,6 +48,13 @@ if [ "$sanitize" = 1 ]; then
       failed=$((failed + 1)); echo "[sanitize] $(basename "$bin"): FAILED"; tail -n 40 "$asan/$(basename "$bin").log"
     fi
   done < "$asan/core_tests.txt"
+  echo "== fuzzing the file parsers (libFuzzer + ASan/UBSan/LeakSanitizer, ${DOORPLATE_FUZZ_SECONDS:-30} s each)"
+  fuzz_summary=$(bash "$repo/scripts/fuzz.sh" --seconds "${DOORPLATE_FUZZ_SECONDS:-30}" 2>&1 | tee /dev/stderr | tail -n1)
+  if [[ "$fuzz_summary" =~ ^fuzz:\ ([0-9]+)\ passed,\ ([0-9]+)\ failed$ ]]; then
+    passed=$((passed + BASH_REMATCH[1])); failed=$((failed + BASH_REMATCH[2]))
+  else
+    failed=$((failed + 1)); echo "[fuzz] did not run: $fuzz_summary"
+  fi
 fi
 
 echo "tests: $passed passed, $failed failed"

@@ -10,7 +10,7 @@ YamlField YamlField::Parse(const std::string& text, const std::string& source) {
     YAML::Node root = YAML::Load(text);
     if (!root.IsMap()) throw YamlFieldError(source + ": top level must be a mapping of fields");
     return YamlField(root, source, "");
-  } catch (const YAML::ParserException& e) {
+  } catch (const YAML::Exception& e) {  // ParserException and yaml-cpp's other load errors
     std::ostringstream out;
     out << source << ": line " << e.mark.line + 1 << ", column " << e.mark.column + 1 << ": " << e.msg;
     throw YamlFieldError(out.str());
@@ -48,7 +48,9 @@ std::vector<YamlField> YamlField::Items() const {
 void YamlField::RequireOnlyKeys(const std::set<std::string>& allowed) const {
   if (!node_.IsMap()) Fail("must be a mapping");
   for (const auto& kv : node_) {
-    const std::string key = kv.first.as<std::string>();
+    // A key that is a list or a mapping (`? [a, b]: 1`) is no field name of ours (found by fuzzing).
+    if (!kv.first.IsScalar()) Fail("field names must be plain words, got a list or mapping as a key");
+    const std::string key = kv.first.Scalar();
     if (allowed.count(key) == 0) {
       std::string list;
       for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;

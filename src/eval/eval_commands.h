@@ -10,4 +10,10 @@ namespace doorplate_localization {
 // Text reading on a corridor sweep (paper Table I, Figure 12): ocr_command.cpp.
 int RunOcrCommand(const std::vector<std::string>& args, const std::string& command_line);
 
+// Global localization and kidnapped-robot trials (paper Table III): localize_command.cpp.
+int RunLocalizeCommand(const std::vector<std::string>& args, const std::string& command_line);
+
+// SLAM of a corridor sweep, laser only or with doorplate text (paper Table II): map_command.cpp.
+int RunMapCommand(const std::vector<std::string>& args, const std::string& command_line);
+
 }  // namespace doorplate_localization

@@ -116,14 +116,20 @@ MapImage ParsePgm(const std::string& bytes, const std::string& source) {
   image.width = static_cast<int>(width);
   image.height = static_cast<int>(height);
   const size_t count = static_cast<size_t>(width) * static_cast<size_t>(height);
+  // Check that the data can hold `count` pixels before allocating them: a 20-byte header claiming
+  // 65536 x 65536 must not cost 4 GB (found by fuzz/map_image_fuzz).
+  const size_t start = tokens.pos() + 1;  // P5: exactly one whitespace byte after maxval
+  const size_t available = bytes.size() > start ? bytes.size() - start : 0;
+  if (magic == "P5" && available < count) {
+    throw MapFileError(source + ": pixel data: truncated, expected " + std::to_string(count) +
+                       " bytes after the header, got " + std::to_string(available));
+  }
+  if (magic == "P2" && available < count) {  // P2: at least a digit per value
+    throw MapFileError(source + ": pixel data: truncated, expected " + std::to_string(count) +
+                       " values, got at most " + std::to_string((available + 1) / 2));
+  }
   image.gray.resize(count);
   if (magic == "P5") {
-    const size_t start = tokens.pos() + 1;  // exactly one whitespace byte after maxval
-    const size_t available = bytes.size() > start ? bytes.size() - start : 0;
-    if (available < count) {
-      throw MapFileError(source + ": pixel data: truncated, expected " + std::to_string(count) +
-                         " bytes after the header, got " + std::to_string(available));
-    }
     for (size_t i = 0; i < count; ++i) {
       const long v = static_cast<unsigned char>(bytes[start + i]);
       if (v > maxval) {

@@ -3,12 +3,16 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
+#include <utility>
 
 #include "doorplate_localization/common/yaml_reader.h"
 #include "doorplate_localization/maps/map_image.h"
@@ -30,6 +34,7 @@ struct MapMetadata {
   double occupied_thresh = 0.65;
   double free_thresh = 0.196;
   MapMode mode = MapMode::kTrinary;
+  std::string save_id;     // the save marker comment SaveOccupancyMap writes, "" for other YAML files
 };
 
 // The thresholds SaveOccupancyMap writes: 205 (unknown) reads back as neither free nor occupied.
@@ -73,8 +78,42 @@ double ReadProbability(const YamlField& root, const std::string& key) {
   return v;
 }
 
+// SaveOccupancyMap marks the YAML and the image header of one save with the same comment line, so that a
+// loader can tell whether an image belongs to its YAML (see SaveOccupancyMap).
+constexpr char kSaveMarker[] = "# doorplate_localization save ";
+
+// The id of the first save marker line within the first `limit` bytes of `text`, or "".
+std::string SaveIdIn(const std::string& text, size_t limit = 4096) {
+  const std::string head = text.substr(0, limit);
+  size_t at = head.rfind(kSaveMarker, 0) == 0 ? 0 : head.find(std::string("\n") + kSaveMarker);
+  if (at == std::string::npos) return "";
+  if (head[at] == '\n') ++at;
+  const size_t begin = at + sizeof(kSaveMarker) - 1;
+  const size_t end = head.find_first_of("\r\n", begin);
+  return head.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+}
+
+// The save marker of an image file's header, "" if none or unreadable.
+std::string SaveIdOfFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(256, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<size_t>(std::max<std::streamsize>(0, in.gcount())));
+  return SaveIdIn(head);
+}
+
+// The image that belongs to a YAML written by SaveOccupancyMap: its named image, or — when a save was
+// killed between renaming the new image and the new YAML — the previous image kept as `<image>.prev`.
+std::string PairedImagePath(const std::string& image_path, const std::string& save_id) {
+  if (save_id.empty() || SaveIdOfFile(image_path) == save_id) return image_path;
+  const std::string previous = image_path + ".prev";
+  if (fs::is_regular_file(previous) && SaveIdOfFile(previous) == save_id) return previous;
+  return image_path;
+}
+
 MapMetadata ReadMetadata(const std::string& yaml_path) {
-  const YamlField root = YamlField::Parse(ReadTextFile(yaml_path), yaml_path);
+  const std::string text = ReadTextFile(yaml_path);
+  const YamlField root = YamlField::Parse(text, yaml_path);
   root.RequireOnlyKeys({"image", "resolution", "origin", "negate", "occupied_thresh", "free_thresh", "mode"});
   MapMetadata meta;
   const YamlField image = root.Child("image");
@@ -103,6 +142,7 @@ MapMetadata ReadMetadata(const std::string& yaml_path) {
   if (!fs::is_regular_file(meta.image_path)) {
     image.Fail("image file '" + meta.image_path + "' not found");
   }
+  meta.save_id = SaveIdIn(text);
   return meta;
 }
 
@@ -127,61 +167,9 @@ std::uint8_t PixelValue(std::int8_t cell) {
   return 205;
 }
 
-}  // namespace
-
-OccupancyGrid LoadOccupancyMap(const std::string& yaml_path) {
-  MapMetadata meta;
-  try {
-    meta = ReadMetadata(yaml_path);
-  } catch (const YamlFieldError& e) {
-    throw MapFileError(e.what());
-  }
-  const MapImage image = ReadMapImage(meta.image_path);
-  OccupancyGrid grid(image.width, image.height, meta.resolution_m, meta.origin);
-  for (int row = 0; row < image.height; ++row) {
-    for (int x = 0; x < image.width; ++x) {
-      const size_t i = static_cast<size_t>(row) * image.width + x;
-      const int alpha = image.alpha.empty() ? 255 : image.alpha[i];
-      grid.At(x, image.height - 1 - row) = CellValue(image.gray[i], alpha, meta);  // row 0 = top = highest y
-    }
-  }
-  return grid;
-}
-
-void SaveOccupancyMap(const OccupancyGrid& grid, const std::string& base_path) {
-  if (grid.width <= 0 || grid.height <= 0 ||
-      grid.cells.size() != static_cast<size_t>(grid.width) * static_cast<size_t>(grid.height)) {
-    throw MapFileError(base_path + ".yaml: cannot save a grid of " + std::to_string(grid.width) + " x " +
-                       std::to_string(grid.height) + " cells holding " + std::to_string(grid.cells.size()));
-  }
-  MapImage image;
-  image.width = grid.width;
-  image.height = grid.height;
-  image.gray.resize(grid.cells.size());
-  for (int row = 0; row < grid.height; ++row) {
-    for (int x = 0; x < grid.width; ++x) {
-      image.gray[static_cast<size_t>(row) * grid.width + x] = PixelValue(grid.At(x, grid.height - 1 - row));
-    }
-  }
-  const std::string image_path = base_path + ".pgm";
-  std::ostringstream yaml;
-  yaml << "image: " << fs::path(image_path).filename().string() << "\n"
-       << "resolution: " << FormatNumber(grid.resolution_m) << "\n"
-       << "origin: [" << FormatNumber(grid.origin.x_m) << ", " << FormatNumber(grid.origin.y_m) << ", "
-       << FormatNumber(grid.origin.theta_rad) << "]\n"
-       << "negate: 0\n"
-       << "occupied_thresh: " << FormatNumber(kSaveOccupiedThresh) << "\n"
-       << "free_thresh: " << FormatNumber(kSaveFreeThresh) << "\n"
-       << "mode: trinary\n";
-  try {
-    WriteFileAtomically(image_path, EncodePgm(image));  // the image first: the YAML never names a missing one
-    WriteFileAtomically(base_path + ".yaml", yaml.str());
-  } catch (const std::runtime_error& e) {
-    throw MapFileError(e.what());
-  }
-}
-
-void WriteFileAtomically(const std::string& path, const std::string& text) {
+// Writes `text` to `path`.tmp.<pid> and flushes it to disk; returns that name. Throws std::runtime_error
+// naming `path` (and removes the temporary file).
+std::string WriteTemporaryFile(const std::string& path, const std::string& text) {
   const std::string temp = path + ".tmp." + std::to_string(::getpid());
   const auto fail = [&](const std::string& what) {
     const std::string reason = std::strerror(errno);
@@ -208,14 +196,118 @@ void WriteFileAtomically(const std::string& path, const std::string& text) {
     fail("cannot flush '" + temp + "' to disk");
   }
   if (::close(fd) != 0) fail("cannot close '" + temp + "'");
-  if (::rename(temp.c_str(), path.c_str()) != 0) fail("cannot rename '" + temp + "' over it");
-  // Make the rename itself durable; a folder that cannot be opened only loses that guarantee.
+  return temp;
+}
+
+// Renames the flushed `temp` over `path`. Throws std::runtime_error naming `path` (and removes `temp`).
+void RenameOver(const std::string& path, const std::string& temp) {
+  if (::rename(temp.c_str(), path.c_str()) != 0) {
+    const std::string reason = std::strerror(errno);
+    ::unlink(temp.c_str());
+    throw std::runtime_error(path + ": cannot rename '" + temp + "' over it: " + reason);
+  }
+}
+
+// Makes renames in the folder of `path` durable; a folder that cannot be opened only loses that guarantee.
+void SyncFolderOf(const std::string& path) {
   const std::string folder = fs::path(path).parent_path().empty() ? "." : fs::path(path).parent_path().string();
   const int dir_fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (dir_fd >= 0) {
     ::fsync(dir_fd);
     ::close(dir_fd);
   }
+}
+
+}  // namespace
+
+OccupancyGrid LoadOccupancyMap(const std::string& yaml_path) {
+  MapMetadata meta;
+  try {
+    meta = ReadMetadata(yaml_path);
+  } catch (const YamlFieldError& e) {
+    throw MapFileError(e.what());
+  }
+  const MapImage image = ReadMapImage(PairedImagePath(meta.image_path, meta.save_id));
+  OccupancyGrid grid(image.width, image.height, meta.resolution_m, meta.origin);
+  for (int row = 0; row < image.height; ++row) {
+    for (int x = 0; x < image.width; ++x) {
+      const size_t i = static_cast<size_t>(row) * image.width + x;
+      const int alpha = image.alpha.empty() ? 255 : image.alpha[i];
+      grid.At(x, image.height - 1 - row) = CellValue(image.gray[i], alpha, meta);  // row 0 = top = highest y
+    }
+  }
+  return grid;
+}
+
+void SaveOccupancyMap(const OccupancyGrid& grid, const std::string& base_path) {
+  if (grid.width <= 0 || grid.height <= 0 ||
+      grid.cells.size() != static_cast<size_t>(grid.width) * static_cast<size_t>(grid.height)) {
+    throw MapFileError(base_path + ".yaml: cannot save a grid of " + std::to_string(grid.width) + " x " +
+                       std::to_string(grid.height) + " cells holding " + std::to_string(grid.cells.size()));
+  }
+  MapImage image;
+  image.width = grid.width;
+  image.height = grid.height;
+  image.gray.resize(grid.cells.size());
+  for (int row = 0; row < grid.height; ++row) {
+    for (int x = 0; x < grid.width; ++x) {
+      image.gray[static_cast<size_t>(row) * grid.width + x] = PixelValue(grid.At(x, grid.height - 1 - row));
+    }
+  }
+  const std::string image_path = base_path + ".pgm", yaml_path = base_path + ".yaml";
+  std::ostringstream body;
+  body << "image: " << fs::path(image_path).filename().string() << "\n"
+       << "resolution: " << FormatNumber(grid.resolution_m) << "\n"
+       << "origin: [" << FormatNumber(grid.origin.x_m) << ", " << FormatNumber(grid.origin.y_m) << ", "
+       << FormatNumber(grid.origin.theta_rad) << "]\n"
+       << "negate: 0\n"
+       << "occupied_thresh: " << FormatNumber(kSaveOccupiedThresh) << "\n"
+       << "free_thresh: " << FormatNumber(kSaveFreeThresh) << "\n"
+       << "mode: trinary\n";
+  const std::string yaml_body = body.str(), pixels = EncodePgm(image);
+  // The save's id: a hash of what it writes, so the same map always gives the same files.
+  std::uint64_t hash = 14695981039346656037ull;  // FNV-1a, 64 bit
+  for (const std::string* part : {&yaml_body, &pixels}) {
+    for (const unsigned char c : *part) hash = (hash ^ c) * 1099511628211ull;
+  }
+  std::ostringstream id;
+  id << std::hex << hash;
+  const std::string yaml = kSaveMarker + id.str() + "\n" + yaml_body;
+  const std::string pgm = "P5\n" + std::string(kSaveMarker) + id.str() + "\n" + pixels.substr(3);
+  // Two files cannot be replaced in one step. Both are written and flushed under temporary names, the
+  // image the current YAML pairs with is kept as `<base>.pgm.prev` (a hard link), then the image and the
+  // YAML are renamed over the old ones and `.prev` is removed. A process killed anywhere in between leaves
+  // a YAML whose save marker names its image: `<base>.pgm`, or `<base>.pgm.prev` between the two renames,
+  // which LoadOccupancyMap then reads. So the map on disk always loads as the previous or the new one
+  // (test/maps/map_io_crash_safety_test.cpp). map_server ignores the marker comments.
+  const std::string previous = image_path + ".prev";
+  std::string image_temp, yaml_temp;  // set while they exist
+  try {
+    image_temp = WriteTemporaryFile(image_path, pgm);
+    yaml_temp = WriteTemporaryFile(yaml_path, yaml);
+    std::ifstream old_yaml(yaml_path, std::ios::binary);
+    const std::string old_id = old_yaml ? SaveIdIn(std::string(std::istreambuf_iterator<char>(old_yaml), {})) : "";
+    if (fs::is_regular_file(image_path) && (old_id.empty() || SaveIdOfFile(image_path) == old_id)) {
+      ::unlink(previous.c_str());  // a `.prev` left by an earlier kill that no YAML needs any more
+      if (::link(image_path.c_str(), previous.c_str()) != 0) {
+        throw std::runtime_error(previous + ": cannot keep the previous image: " + std::strerror(errno));
+      }
+    }
+    RenameOver(image_path, std::exchange(image_temp, ""));
+    RenameOver(yaml_path, std::exchange(yaml_temp, ""));
+    ::unlink(previous.c_str());
+    SyncFolderOf(image_path);
+  } catch (const std::runtime_error& e) {
+    for (const std::string& temp : {image_temp, yaml_temp}) {
+      if (!temp.empty()) ::unlink(temp.c_str());
+    }
+    throw MapFileError(e.what());
+  }
+}
+
+void WriteFileAtomically(const std::string& path, const std::string& text) {
+  RenameOver(path, WriteTemporaryFile(path, text));
+  SyncFolderOf(path);
 }
 
 }  // namespace doorplate_localization

@@ -12,12 +12,6 @@
 namespace doorplate_localization {
 namespace {
 
-geometry_msgs::Quaternion YawQuaternion(double yaw_rad) {
-  tf2::Quaternion q;
-  q.setRPY(0.0, 0.0, yaw_rad);
-  return tf2::toMsg(q);
-}
-
 // Row-major 6×6 covariance (x, y, z, roll, pitch, yaw) with only the planar diagonal set.
 void FillPlanarCovariance(const PlanarVariance& variance, boost::array<double, 36>* covariance) {
   covariance->fill(0.0);
@@ -52,35 +46,6 @@ sensor_msgs::LaserScan ToLaserScanMsg(const SimulatedScan& scan, double rate_hz,
   msg.range_min = static_cast<float>(scan.min_range_m);
   msg.range_max = static_cast<float>(scan.max_range_m);
   msg.ranges = scan.ranges_m;
-  return msg;
-}
-
-geometry_msgs::Pose ToPoseMsg(const Pose2D& pose, double z_m) {
-  geometry_msgs::Pose msg;
-  msg.position.x = pose.x_m;
-  msg.position.y = pose.y_m;
-  msg.position.z = z_m;
-  msg.orientation = YawQuaternion(pose.theta_rad);
-  return msg;
-}
-
-geometry_msgs::Transform ToTransformMsg(const Pose2D& pose, double z_m) {
-  geometry_msgs::Transform msg;
-  msg.translation.x = pose.x_m;
-  msg.translation.y = pose.y_m;
-  msg.translation.z = z_m;
-  msg.rotation = YawQuaternion(pose.theta_rad);
-  return msg;
-}
-
-geometry_msgs::TransformStamped ToTransformStampedMsg(const Pose2D& child_in_parent, const std::string& parent_frame,
-                                                      const std::string& child_frame, const ros::Time& stamp,
-                                                      double z_m) {
-  geometry_msgs::TransformStamped msg;
-  msg.header.frame_id = parent_frame;
-  msg.header.stamp = stamp;
-  msg.child_frame_id = child_frame;
-  msg.transform = ToTransformMsg(child_in_parent, z_m);
   return msg;
 }
 

@@ -69,18 +69,6 @@ PlateReport FromTextDetectionMsg(const TextDetection& msg, const ros::Time& stam
   return report;
 }
 
-std::string ValidateTextDetection(const TextDetection& msg) {
-  std::ostringstream problem;
-  if (msg.text.empty()) {
-    problem << "text is empty";
-  } else if (!std::isfinite(msg.bearing_rad) || std::fabs(msg.bearing_rad) > M_PI / 2) {
-    problem << "bearing_rad must be finite and within ±pi/2, got " << msg.bearing_rad;
-  } else if (!(msg.confidence >= 0.0f && msg.confidence <= 1.0f)) {
-    problem << "confidence must be in [0, 1], got " << msg.confidence;
-  }
-  return problem.str();
-}
-
 std::string ReadCameraGeometry(const sensor_msgs::CameraInfo& info, CameraGeometry* geometry) {
   std::ostringstream problem;
   if (info.width == 0 || info.height == 0) {

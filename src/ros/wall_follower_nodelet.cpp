@@ -74,7 +74,9 @@ class WallFollowerNodelet : public nodelet::Nodelet {
     }
     if (problem.empty() && sweep_) {
       try {
-        const auto tf = tf_buffer_.lookupTransform(options_.odom_frame_id, options_.base_frame_id, scan->header.stamp,
+        // The latest odometry, not the one at the scan's stamp: the turn is measured by the yaw change, which
+        // a few tens of milliseconds of latency do not disturb, while waiting for the stamp can time out.
+        const auto tf = tf_buffer_.lookupTransform(options_.odom_frame_id, options_.base_frame_id, ros::Time(0),
                                                    ros::Duration(0.1));
         odom_pose = {tf.transform.translation.x, tf.transform.translation.y, tf2::getYaw(tf.transform.rotation)};
       } catch (const tf2::TransformException& e) {

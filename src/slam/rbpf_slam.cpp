@@ -20,6 +20,8 @@ const RbpfSlamOptions& Validated(const RbpfSlamOptions& o) {
   if (!(o.no_return_clear_range_m >= 0)) fail("no_return_clear_range_m: must be >= 0");
   if (o.max_match_points < 3) fail("max_match_points: must be >= 3");
   if (!(o.mean_trajectory_radius_m >= 0)) fail("mean_trajectory_radius_m: must be >= 0");
+  if (!(o.degenerate_min_points >= 0)) fail("degenerate_min_points: must be >= 0");
+  if (!(o.max_match_range_m >= 0)) fail("max_match_range_m: must be >= 0");
   return o;
 }
 
@@ -29,6 +31,32 @@ void ValidateScan(const RangeScan& scan) {
     throw std::invalid_argument(
         "RbpfSlam: a scan needs ranges, a finite angle_min_rad and a finite, non-zero angle_increment_rad");
   }
+}
+
+// The scan's positional information Σ n nᵀ: its weakest direction (base_link) and eigenvalue (points). n: unit normal of the chord between the echoes 0.1-0.4 m before and after each
+// echo along the scan (a shorter chord would turn 1 cm of range noise into a tilted normal).
+double FindDegenerateAxis(const std::vector<Vec2>& ordered_hits, Vec2* axis) {
+  constexpr double kMinChord = 0.1, kMaxChord = 0.4;
+  const int n = static_cast<int>(ordered_hits.size());
+  double sxx = 0, sxy = 0, syy = 0;
+  for (int i = 0; i < n; ++i) {
+    const Vec2 p = ordered_hits[i];
+    int lo = i - 1, hi = i + 1;
+    while (lo >= 0 && Norm(ordered_hits[lo] - p) < kMinChord && Norm(ordered_hits[lo + 1] - ordered_hits[lo]) < kMinChord) --lo;
+    while (hi < n && Norm(ordered_hits[hi] - p) < kMinChord && Norm(ordered_hits[hi - 1] - ordered_hits[hi]) < kMinChord) ++hi;
+    if (lo < 0 || hi >= n) continue;
+    const Vec2 a = ordered_hits[lo], b = ordered_hits[hi];
+    if (Norm(a - p) < kMinChord || Norm(b - p) < kMinChord || Norm(a - p) > kMaxChord || Norm(b - p) > kMaxChord) continue;
+    // Both halves must lie on one line (a corner is not a surface).
+    const Vec2 u = (1.0 / Norm(b - a)) * (b - a);
+    if (std::abs(Cross(u, p - a)) > 0.03) continue;
+    sxx += u.y * u.y, sxy -= u.x * u.y, syy += u.x * u.x;  // n = (-u.y, u.x)
+  }
+  const double mean = 0.5 * (sxx + syy), diff = 0.5 * (sxx - syy);
+  const double smaller = mean - std::sqrt(diff * diff + sxy * sxy);
+  const double angle = 0.5 * std::atan2(2.0 * sxy, sxx - syy) + 1.5707963267948966;  // minor eigenvector
+  *axis = {std::cos(angle), std::sin(angle)};
+  return smaller;
 }
 
 }  // namespace
@@ -52,8 +80,17 @@ RbpfSlam::ScanPoints RbpfSlam::PrepareScan(const RangeScan& scan) const {
     const double d = hit ? r : std::isinf(r) ? std::min(usable, options_.no_return_clear_range_m) : usable;
     if (d <= 0.0) continue;
     const Vec2 end = scan.laser_pose.TransformPoint({d * std::cos(a), d * std::sin(a)});
-    points.integrate.emplace_back(end, hit);
-    if (hit) hits.push_back(end);
+    points.integrate.emplace_back(end, hit ? ScanPoints::BeamEnd::kHit
+                                          : std::isinf(r) ? ScanPoints::BeamEnd::kNoReturn : ScanPoints::BeamEnd::kCut);
+    if (hit && (options_.max_match_range_m <= 0 || r <= options_.max_match_range_m)) hits.push_back(end);
+  }
+  if (options_.degenerate_min_points > 0) {
+    const double weakest = FindDegenerateAxis(hits, &points.degenerate_axis);
+    points.degenerate = weakest < options_.degenerate_min_points;
+    // 0 below k = degenerate_min_points (odometry only along the axis), 1 above 2k (the whole correction:
+    // an end wall in range constrains the match), linear in between.
+    const double k = options_.degenerate_min_points;
+    points.along_axis_gain = std::clamp((weakest - k) / k, 0.0, 1.0);
   }
   const std::size_t stride = (hits.size() + options_.max_match_points - 1) / options_.max_match_points;
   for (std::size_t k = 0; k < hits.size(); k += std::max<std::size_t>(stride, 1)) points.match.push_back(hits[k]);
@@ -62,8 +99,14 @@ RbpfSlam::ScanPoints RbpfSlam::PrepareScan(const RangeScan& scan) const {
 
 void RbpfSlam::Integrate(SlamParticle& particle, const ScanPoints& points) const {
   const Vec2 origin = particle.pose.TransformPoint(points.origin);
-  for (const auto& [end, hit] : points.integrate) {
-    particle.map.IntegrateBeam(origin, particle.pose.TransformPoint(end), hit);
+  // Beams with an echo first, so that a dropout between echoes of a wall not yet in the map stops at
+  // the wall this very scan puts there.
+  for (const auto& [end, kind] : points.integrate) {
+    if (kind == ScanPoints::BeamEnd::kNoReturn) continue;
+    particle.map.IntegrateBeam(origin, particle.pose.TransformPoint(end), kind == ScanPoints::BeamEnd::kHit);
+  }
+  for (const auto& [end, kind] : points.integrate) {
+    if (kind == ScanPoints::BeamEnd::kNoReturn) particle.map.IntegrateNoReturnBeam(origin, particle.pose.TransformPoint(end));
   }
 }
 
@@ -72,7 +115,7 @@ bool RbpfSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int s
   ++stats_.scans_seen;
   if (!started_) {
     const ScanPoints points = PrepareScan(scan);
-    SlamParticle first{odometry_pose, 0.0, 0.0, TiledGrid(options_.grid), nullptr};
+    SlamParticle first{odometry_pose, 0.0, 0.0, TiledGrid(options_.grid), nullptr, nullptr};
     Integrate(first, points);
     first.trajectory = ExtendTrajectory(nullptr, {scan_index, odometry_pose});
     particles_.assign(options_.num_particles, first);
@@ -108,7 +151,20 @@ bool RbpfSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int s
     const MatchResult r =
         matcher_.Match(p.map, points.match, p.pose.Compose(step), matcher_.NarrowWindow(), prior, spread);
     p.pose = r.pose;
-    const double l = options_.likelihood_gain * r.log_likelihood;
+    double log_likelihood = r.log_likelihood;
+    if (options_.degenerate_min_points > 0 && r.status == MatchResult::Status::kMatched &&
+        points.along_axis_gain < 1.0) {
+      // Along the scan's weakest axis, move from this particle's odometry sample only by the share
+      // along_axis_gain of the match's correction (0 when the scan does not fix that axis, 1 when it does).
+      const double c = std::cos(p.pose.theta_rad), s = std::sin(p.pose.theta_rad);
+      const Vec2 axis{c * points.degenerate_axis.x - s * points.degenerate_axis.y,
+                      s * points.degenerate_axis.x + c * points.degenerate_axis.y};
+      const double along = (1.0 - points.along_axis_gain) * Dot(p.pose.Position() - prior.Position(), axis);
+      p.pose.x_m -= along * axis.x;
+      p.pose.y_m -= along * axis.y;
+      log_likelihood = matcher_.LogLikelihood(p.map, points.match, p.pose);
+    }
+    const double l = options_.likelihood_gain * log_likelihood;
     p.log_weight += l;
     p.log_score += l;
     switch (r.status) {
@@ -117,6 +173,7 @@ bool RbpfSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int s
       case MatchResult::Status::kRejectedJump: ++stats_.rejected_jumps; break;
     }
   }
+  if (points.degenerate) ++stats_.degenerate_scans;
   FinishStep(&points, scan_index);
   last_odometry_ = odometry_pose;
   ++stats_.scans_processed;
@@ -126,6 +183,18 @@ bool RbpfSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int s
 void RbpfSlam::ReweightParticles(const std::function<double(const SlamParticle&)>& log_likelihood) {
   for (SlamParticle& p : particles_) {
     const double l = log_likelihood(p);
+    p.log_weight += l;
+    p.log_score += l;
+  }
+  FinishStep(nullptr, 0);
+}
+
+void RbpfSlam::UpdateLandmarksAndReweight(
+    const std::function<double(const SlamParticle&, SlamLandmarksHandle*)>& update) {
+  for (SlamParticle& p : particles_) {
+    SlamLandmarksHandle handle = p.landmarks;
+    const double l = update(p, &handle);
+    p.landmarks = std::move(handle);
     p.log_weight += l;
     p.log_score += l;
   }

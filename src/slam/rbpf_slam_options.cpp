@@ -23,6 +23,8 @@ const Field kFields[] = {
     {"max_usable_range_m", [](O& o) { return &o.max_usable_range_m; }, nullptr},
     {"no_return_clear_range_m", [](O& o) { return &o.no_return_clear_range_m; }, nullptr},
     {"mean_trajectory_radius_m", [](O& o) { return &o.mean_trajectory_radius_m; }, nullptr},
+    {"degenerate_min_points", [](O& o) { return &o.degenerate_min_points; }, nullptr},
+    {"max_match_range_m", [](O& o) { return &o.max_match_range_m; }, nullptr},
     {"grid.resolution_m", [](O& o) { return &o.grid.resolution_m; }, nullptr},
     {"grid.hit_log_odds", [](O& o) { return &o.grid.hit_log_odds; }, nullptr},
     {"grid.miss_log_odds", [](O& o) { return &o.grid.miss_log_odds; }, nullptr},
@@ -61,7 +63,52 @@ const Field& Find(const std::string& name) {
   throw std::invalid_argument("unknown SLAM option '" + name + "'");
 }
 
+using T = TextSlamOptions;
+struct TextField {
+  const char* name;
+  double* (*real)(TextSlamOptions&);
+};
+const TextField kTextFields[] = {
+    {"text.min_confidence", [](T& o) { return &o.min_confidence; }},
+    {"text.min_plate_range_m", [](T& o) { return &o.min_plate_range_m; }},
+    {"text.max_plate_range_m", [](T& o) { return &o.max_plate_range_m; }},
+    {"text.range_beam_window_rad", [](T& o) { return &o.range_beam_window_rad; }},
+    {"text.plate_sigma_m", [](T& o) { return &o.plate_sigma_m; }},
+    {"text.association_radius_m", [](T& o) { return &o.association_radius_m; }},
+    {"text.text_likelihood_gain", [](T& o) { return &o.text_likelihood_gain; }},
+    {"text.max_odometry_gap_m", [](T& o) { return &o.max_odometry_gap_m; }},
+};
+
+const TextField* FindText(const std::string& name) {
+  for (const TextField& f : kTextFields) {
+    if (name == f.name) return &f;
+  }
+  return nullptr;
+}
+
 }  // namespace
+
+std::vector<std::string> TextSlamOptionNames() {
+  std::vector<std::string> names = RbpfSlamOptionNames();
+  for (const TextField& f : kTextFields) names.push_back(f.name);
+  return names;
+}
+
+void SetTextSlamOption(const std::string& name, double value, TextSlamOptions* options) {
+  if (const TextField* f = FindText(name)) {
+    *f->real(*options) = value;
+    return;
+  }
+  SetRbpfSlamOption(name, value, &options->slam);
+}
+
+double GetTextSlamOption(const std::string& name, const TextSlamOptions& options) {
+  if (const TextField* f = FindText(name)) {
+    TextSlamOptions copy = options;
+    return *f->real(copy);
+  }
+  return GetRbpfSlamOption(name, options.slam);
+}
 
 std::vector<std::string> RbpfSlamOptionNames() {
   std::vector<std::string> names;

@@ -123,7 +123,11 @@ void TiledGrid::RemoveObstacle(CellIndex c) {
   }
 }
 
-void TiledGrid::IntegrateBeam(Vec2 from, Vec2 to, bool hit) {
+void TiledGrid::IntegrateBeam(Vec2 from, Vec2 to, bool hit) { WalkBeam(from, to, hit ? hit_ : miss_, false); }
+
+void TiledGrid::IntegrateNoReturnBeam(Vec2 from, Vec2 to) { WalkBeam(from, to, miss_, true); }
+
+void TiledGrid::WalkBeam(Vec2 from, Vec2 to, int last_delta, bool stop_at_obstacle) {
   const CellIndex a = CellOf(from), b = CellOf(to);
   // Bresenham over cells from a to b; b itself is handled after the loop. The tile is looked up only
   // when the walk enters another one (a tile made writable stays the same object while we write).
@@ -138,13 +142,21 @@ void TiledGrid::IntegrateBeam(Vec2 from, Vec2 to, bool hit) {
       tile_x = c.x >> kTileBits, tile_y = c.y >> kTileBits;
       tile = MutableTile(tile_x, tile_y);
     }
+    if (stop_at_obstacle && tile->dist2[CellInTile(c)] == 0) return;
     if (c.x == b.x && c.y == b.y) break;
     UpdateCellInTile(tile, c, miss_);
     const int e2 = 2 * err;
-    if (e2 >= dy) err += dy, c.x += sx;
-    if (e2 <= dx) err += dx, c.y += sy;
+    const bool step_x = e2 >= dy, step_y = e2 <= dx;
+    // A diagonal step slips between two cells; a wall drawn as a staircase of obstacle cells has one of
+    // them, so a beam that must stop at obstacles stops there too.
+    if (stop_at_obstacle && step_x && step_y &&
+        (IsObstacle({c.x + sx, c.y}) || IsObstacle({c.x, c.y + sy}))) {
+      return;
+    }
+    if (step_x) err += dy, c.x += sx;
+    if (step_y) err += dx, c.y += sy;
   }
-  UpdateCellInTile(tile, b, hit ? hit_ : miss_);
+  UpdateCellInTile(tile, b, last_delta);
 }
 
 bool TiledGrid::Bounds(CellIndex* min_cell, CellIndex* max_cell) const {

@@ -5,16 +5,11 @@
 //   DIR/map.pgm, DIR/map.yaml  the best particle's map, map_server format
 //   DIR/map_trajectory.png     the map with the trajectory drawn over it
 // and a progress line on stderr every few seconds.
-#include <sys/resource.h>
-
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -22,6 +17,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "cli_args.h"
+#include "map_tool_output.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/slam/carmen_reader.h"
 #include "doorplate_localization/slam/rbpf_slam.h"
@@ -38,12 +34,8 @@ const char kUsage[] =
     "  --set linear_update_m=0.5 --set matcher.field_sigma_m=0.05 (see docs/slam.md for the names).\n"
     "  --dump-particles also writes every particle's trajectory (trajectory_particleI.txt).\n";
 
-using doorplate_localization::tools::UsageError;
-
-double ParseNumber(const std::string& what, const std::string& text) {
-  if (const auto value = doorplate_localization::tools::ParseFiniteNumber(text)) return *value;
-  throw UsageError(what + ": '" + text + "' is not a number");
-}
+namespace tools = doorplate_localization::tools;
+using tools::UsageError;
 
 struct Args {
   std::string log, out;
@@ -56,60 +48,31 @@ Args ParseArgs(int argc, char** argv) {
   Args args;
   for (int i = 1; i < argc; ++i) {
     const std::string option = argv[i];
-    if (option == "--help" || option == "-h") {
-      std::cout << kUsage;
-      std::exit(0);
-    }
+    tools::ExitIfHelp(option, kUsage);
     if (option == "--dump-particles") {
       args.dump_particles = true;
       continue;
     }
-    if (i + 1 >= argc) throw UsageError(option + " needs a value");
-    const std::string value = argv[++i];
+    const std::string value = tools::TakeValue(argc, argv, &i);
     if (option == "--log") {
       args.log = value;
     } else if (option == "--out") {
       args.out = value;
     } else if (option == "--progress-s") {
-      args.progress_s = ParseNumber(option, value);
-    } else if (option == "--seed" || option == "--particles") {
-      const double n = ParseNumber(option, value);
-      if (n < (option == "--seed" ? 0 : 1) || n != std::floor(n) || n > 1e9) {
-        throw UsageError(option + ": '" + value + "' is not a valid whole number");
-      }
-      if (option == "--seed") args.options.seed = static_cast<std::uint64_t>(n);
-      else args.options.num_particles = static_cast<int>(n);
+      args.progress_s = tools::ParseNumber(option, value);
+    } else if (option == "--seed") {
+      args.options.seed = static_cast<std::uint64_t>(tools::ParseWholeNumber(option, value, 0));
+    } else if (option == "--particles") {
+      args.options.num_particles = static_cast<int>(tools::ParseWholeNumber(option, value, 1));
     } else if (option == "--set") {
-      const std::size_t eq = value.find('=');
-      if (eq == std::string::npos) throw UsageError("--set: expected NAME=VALUE, got '" + value + "'");
-      const std::string name = value.substr(0, eq);
-      try {
-        SetRbpfSlamOption(name, ParseNumber("--set " + name, value.substr(eq + 1)), &args.options);
-      } catch (const std::invalid_argument& e) {
-        throw UsageError(std::string("--set: ") + e.what());
-      }
+      tools::ApplySetOption(value,
+                            [&](const std::string& name, double v) { SetRbpfSlamOption(name, v, &args.options); });
     } else {
       throw UsageError("unknown option '" + option + "'");
     }
   }
   if (args.log.empty() || args.out.empty()) throw UsageError("--log and --out are required");
   return args;
-}
-
-double PeakRssMb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0;
-}
-
-void WriteTrajectory(const std::vector<dl::TrajectoryPoint>& trajectory, const std::string& path) {
-  std::ostringstream text;
-  text.precision(6);
-  text << std::fixed;
-  for (const dl::TrajectoryPoint& p : trajectory) {
-    text << p.scan_index << ' ' << p.pose.x_m << ' ' << p.pose.y_m << ' ' << p.pose.theta_rad << '\n';
-  }
-  dl::WriteFileAtomically(path, text.str());
 }
 
 // The map in grey (unknown mid-grey, free white, occupied black), north up, trajectory in red; at most
@@ -137,62 +100,51 @@ void WritePicture(const dl::OccupancyGrid& grid, const std::vector<dl::Trajector
   if (!cv::imwrite(path, image)) throw std::runtime_error(path + ": cannot write the image");
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  Args args;
-  try {
-    args = ParseArgs(argc, argv);
-  } catch (const UsageError& e) {
-    std::cerr << "doorplate_map_log: " << e.what() << "\n" << kUsage;
-    return 2;
+int Run(const Args& args) {
+  const tools::Stopwatch clock;
+  std::filesystem::create_directories(args.out);  // fails early, before a long run, if it cannot
+  const dl::CarmenLog log = dl::ReadCarmenLogFile(args.log);
+  if (log.scans.empty()) {
+    const bool gz = args.log.size() > 3 && args.log.compare(args.log.size() - 3, 3, ".gz") == 0;
+    throw std::runtime_error(args.log + ": no FLASER lines" + (gz ? " (a .gz log must be unpacked first)" : ""));
   }
-  try {
-    using Clock = std::chrono::steady_clock;
-    const auto start = Clock::now();
-    const auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
-    std::filesystem::create_directories(args.out);  // fails early, before a long run, if it cannot
-    const dl::CarmenLog log = dl::ReadCarmenLogFile(args.log);
-    if (log.scans.empty()) {
-      const bool gz = args.log.size() > 3 && args.log.compare(args.log.size() - 3, 3, ".gz") == 0;
-      throw std::runtime_error(args.log + ": no FLASER lines" + (gz ? " (a .gz log must be unpacked first)" : ""));
+  dl::RbpfSlam slam(args.options);
+  double next_progress = args.progress_s;
+  for (const dl::CarmenScan& record : log.scans) {
+    slam.AddScan(record.scan, record.odometry_pose, record.scan_index);
+    if (clock.Seconds() >= next_progress) {
+      next_progress += args.progress_s;
+      const dl::RbpfSlamStats& s = slam.stats();
+      std::fprintf(stderr,
+                   "doorplate_map_log: scan %d/%zu, processed %d, neff %.1f, resamplings %d, weak %ld, "
+                   "jumps rejected %ld, maps %.0f MB, %.1f s, peak RSS %.0f MB\n",
+                   s.scans_seen, log.scans.size(), s.scans_processed, s.last_neff, s.resamplings,
+                   s.weak_matches, s.rejected_jumps, slam.MapMemoryBytes() / 1e6, clock.Seconds(), tools::PeakRssMb());
     }
-    dl::RbpfSlam slam(args.options);
-    double next_progress = args.progress_s;
-    for (const dl::CarmenScan& record : log.scans) {
-      slam.AddScan(record.scan, record.odometry_pose, record.scan_index);
-      if (seconds() >= next_progress) {
-        next_progress += args.progress_s;
-        const dl::RbpfSlamStats& s = slam.stats();
-        std::fprintf(stderr,
-                     "doorplate_map_log: scan %d/%zu, processed %d, neff %.1f, resamplings %d, weak %ld, "
-                     "jumps rejected %ld, maps %.0f MB, %.1f s, peak RSS %.0f MB\n",
-                     s.scans_seen, log.scans.size(), s.scans_processed, s.last_neff, s.resamplings,
-                     s.weak_matches, s.rejected_jumps, slam.MapMemoryBytes() / 1e6, seconds(), PeakRssMb());
-      }
-    }
-    const dl::SlamParticle& best = slam.BestParticle();
-    const std::vector<dl::TrajectoryPoint> trajectory = slam.MeanTrajectory();
-    WriteTrajectory(trajectory, args.out + "/trajectory.txt");
-    WriteTrajectory(slam.BestTrajectory(), args.out + "/trajectory_best.txt");
-    if (args.dump_particles) {
-      for (std::size_t i = 0; i < slam.particles().size(); ++i) {
-        WriteTrajectory(dl::UnrollTrajectory(slam.particles()[i].trajectory),
-                        args.out + "/trajectory_particle" + std::to_string(i) + ".txt");
-      }
-    }
-    const dl::OccupancyGrid grid = best.map.ToOccupancyGrid();
-    dl::SaveOccupancyMap(grid, args.out + "/map");
-    WritePicture(grid, trajectory, args.out + "/map_trajectory.png");
-    const dl::RbpfSlamStats& s = slam.stats();
-    std::fprintf(stderr,
-                 "doorplate_map_log: done: %d scans, %d processed, %d resamplings, %ld matches, %ld weak, "
-                 "%ld jumps rejected, no-return %.2f m, maps %.0f MB, %.1f s, peak RSS %.0f MB\n",
-                 s.scans_seen, s.scans_processed, s.resamplings, s.matches, s.weak_matches,
-                 s.rejected_jumps, log.no_return_range_m, slam.MapMemoryBytes() / 1e6, seconds(), PeakRssMb());
-  } catch (const std::exception& e) {
-    std::cerr << "doorplate_map_log: " << e.what() << "\n";
-    return 1;
   }
+  const dl::SlamParticle& best = slam.BestParticle();
+  const std::vector<dl::TrajectoryPoint> trajectory = slam.MeanTrajectory();
+  tools::WriteTrajectory(trajectory, args.out + "/trajectory.txt");
+  tools::WriteTrajectory(slam.BestTrajectory(), args.out + "/trajectory_best.txt");
+  if (args.dump_particles) {
+    for (std::size_t i = 0; i < slam.particles().size(); ++i) {
+      tools::WriteTrajectory(dl::UnrollTrajectory(slam.particles()[i].trajectory),
+                             args.out + "/trajectory_particle" + std::to_string(i) + ".txt");
+    }
+  }
+  const dl::OccupancyGrid grid = best.map.ToOccupancyGrid();
+  dl::SaveOccupancyMap(grid, args.out + "/map");
+  WritePicture(grid, trajectory, args.out + "/map_trajectory.png");
+  const dl::RbpfSlamStats& s = slam.stats();
+  std::fprintf(stderr,
+               "doorplate_map_log: done: %d scans, %d processed, %d resamplings, %ld matches, %ld weak, "
+               "%ld jumps rejected, no-return %.2f m, maps %.0f MB, %.1f s, peak RSS %.0f MB\n",
+               s.scans_seen, s.scans_processed, s.resamplings, s.matches, s.weak_matches,
+               s.rejected_jumps, log.no_return_range_m, slam.MapMemoryBytes() / 1e6, clock.Seconds(),
+               tools::PeakRssMb());
   return 0;
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return tools::RunTool("doorplate_map_log", kUsage, ParseArgs, Run, argc, argv); }

@@ -46,27 +46,20 @@ struct Args {
   int benchmark_frames = 0;
 };
 
-using doorplate_localization::tools::UsageError;
-
-double ParseNumber(const std::string& option, const std::string& text) {
-  if (const auto value = doorplate_localization::tools::ParseFiniteNumber(text)) return *value;
-  throw UsageError(option + ": '" + text + "' is not a number");
-}
+namespace tools = doorplate_localization::tools;
+using tools::ParseNumber;
+using tools::UsageError;
 
 Args ParseArgs(int argc, char** argv) {
   Args args;
   for (int i = 1; i < argc; ++i) {
     const std::string option = argv[i];
-    if (option == "--help" || option == "-h") {
-      std::cout << kUsage;
-      std::exit(0);
-    }
+    tools::ExitIfHelp(option, kUsage);
     if (option == "--clean") {
       args.clean = true;
       continue;
     }
-    if (i + 1 >= argc) throw UsageError(option + " needs a value");
-    const std::string value = argv[++i];
+    const std::string value = tools::TakeValue(argc, argv, &i);
     if (option == "--world") args.world = value;
     else if (option == "--camera") args.camera_out = value;
     else if (option == "--topdown") args.topdown_out = value;
@@ -76,16 +69,11 @@ Args ParseArgs(int argc, char** argv) {
     else if (option == "--theta-deg") args.theta = ParseNumber(option, value) * M_PI / 180.0;
     else if (option == "--speed") args.speed_mps = ParseNumber(option, value);
     else if (option == "--yaw-rate") args.yaw_rate_rps = ParseNumber(option, value);
-    else if (option == "--seed" || option == "--benchmark") {
-      const double n = ParseNumber(option, value);
-      if (n < 0 || n != std::floor(n)) {
-        throw UsageError(option + ": '" + value + "' is not a whole number >= 0");
-      }
-      if (option == "--seed") args.seed = static_cast<std::uint64_t>(n);
-      else args.benchmark_frames = static_cast<int>(n);
-    } else {
-      throw UsageError("unknown option '" + option + "'");
-    }
+    else if (option == "--seed") args.seed = static_cast<std::uint64_t>(
+        tools::ParseWholeNumber(option, value, 0, 1e19));
+    else if (option == "--benchmark") args.benchmark_frames = static_cast<int>(
+        tools::ParseWholeNumber(option, value, 0));
+    else throw UsageError("unknown option '" + option + "'");
   }
   if (args.world.empty()) throw UsageError("--world is required");
   if (args.camera_out.empty()) throw UsageError("--camera is required");
@@ -132,36 +120,28 @@ void Benchmark(const dl::CameraRenderer& camera, const dl::Pose2D& pose, const A
   }
 }
 
+int Run(const Args& args) {
+  const dl::World world = dl::LoadWorldFile(args.world);
+  const dl::Pose2D pose = args.x ? dl::Pose2D{*args.x, *args.y, *args.theta} : world.start_pose;
+  const dl::CameraRenderer camera(world, world.sensors.camera);
+  std::mt19937_64 rng(args.seed);
+  Write(args.camera_out, args.clean ? camera.RenderClean(pose)
+                                    : camera.Render(pose, args.speed_mps, args.yaw_rate_rps, rng));
+  if (!args.topdown_out.empty()) {
+    const dl::LaserSimulator laser(world.sensors.laser);
+    const dl::SimulatedScan scan = laser.Simulate(world, pose, rng);
+    dl::TopDownView view(world);
+    view.DrawScan(scan, pose.Compose(laser.MountPose()));
+    view.DrawCameraFov(camera, pose);
+    view.DrawRobot(pose);
+    Write(args.topdown_out, view.image());
+  }
+  if (args.benchmark_frames > 0) Benchmark(camera, pose, args);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  Args args;
-  try {
-    args = ParseArgs(argc, argv);
-  } catch (const UsageError& e) {
-    std::cerr << "doorplate_sim_snapshot: " << e.what() << "\n" << kUsage;
-    return 2;
-  }
-  try {
-    const dl::World world = dl::LoadWorldFile(args.world);
-    const dl::Pose2D pose = args.x ? dl::Pose2D{*args.x, *args.y, *args.theta} : world.start_pose;
-    const dl::CameraRenderer camera(world, world.sensors.camera);
-    std::mt19937_64 rng(args.seed);
-    Write(args.camera_out, args.clean ? camera.RenderClean(pose)
-                                      : camera.Render(pose, args.speed_mps, args.yaw_rate_rps, rng));
-    if (!args.topdown_out.empty()) {
-      const dl::LaserSimulator laser(world.sensors.laser);
-      const dl::SimulatedScan scan = laser.Simulate(world, pose, rng);
-      dl::TopDownView view(world);
-      view.DrawScan(scan, pose.Compose(laser.MountPose()));
-      view.DrawCameraFov(camera, pose);
-      view.DrawRobot(pose);
-      Write(args.topdown_out, view.image());
-    }
-    if (args.benchmark_frames > 0) Benchmark(camera, pose, args);
-  } catch (const std::exception& e) {
-    std::cerr << "doorplate_sim_snapshot: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  return tools::RunTool("doorplate_sim_snapshot", kUsage, ParseArgs, Run, argc, argv);
 }

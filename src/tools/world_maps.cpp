@@ -4,12 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 #include <iostream>
 #include <stdexcept>
 #include <string>
 
 #include "cli_args.h"
+#include "map_tool_output.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/sim/ground_truth_maps.h"
 #include "doorplate_localization/sim/world_loader.h"
@@ -29,10 +29,11 @@ struct Args {
   double laser_height_m = NAN;  // NaN: the world's laser mount height
 };
 
-using doorplate_localization::tools::UsageError;
+namespace tools = doorplate_localization::tools;
+using tools::UsageError;
 
 double ParsePositive(const std::string& option, const std::string& text) {
-  const auto value = doorplate_localization::tools::ParseFiniteNumber(text);
+  const auto value = tools::ParseFiniteNumber(text);
   if (!value || *value <= 0.0) throw UsageError(option + ": '" + text + "' is not a number > 0");
   return *value;
 }
@@ -41,12 +42,8 @@ Args ParseArgs(int argc, char** argv) {
   Args args;
   for (int i = 1; i < argc; ++i) {
     const std::string option = argv[i];
-    if (option == "--help" || option == "-h") {
-      std::cout << kUsage;
-      std::exit(0);
-    }
-    if (i + 1 >= argc) throw UsageError(option + " needs a value");
-    const std::string value = argv[++i];
+    tools::ExitIfHelp(option, kUsage);
+    const std::string value = tools::TakeValue(argc, argv, &i);
     if (option == "--world") args.world = value;
     else if (option == "--out") args.out = value;
     else if (option == "--resolution") args.resolution_m = ParsePositive(option, value);
@@ -62,34 +59,24 @@ int Count(const dl::OccupancyGrid& grid, std::int8_t value) {
   return static_cast<int>(std::count(grid.cells.begin(), grid.cells.end(), value));
 }
 
+int Run(const Args& args) {
+  const dl::World world = dl::LoadWorldFile(args.world);
+  const double laser_height_m =
+      std::isnan(args.laser_height_m) ? world.sensors.laser.mount_height_m : args.laser_height_m;
+  const dl::OccupancyGrid grid = dl::RasterizeWorld(world, args.resolution_m, laser_height_m);
+  const dl::TextMap text_map = dl::GroundTruthTextMap(world);
+  tools::SaveMapPair(grid, text_map, args.out);
+  std::cout << args.out << ".{pgm,yaml}: " << grid.width << " x " << grid.height << " cells at "
+            << grid.resolution_m << " m, laser height " << laser_height_m << " m: "
+            << Count(grid, dl::OccupancyGrid::kFree) << " free, " << Count(grid, dl::OccupancyGrid::kOccupied)
+            << " occupied\n"
+            << args.out << ".text_map.yaml: " << text_map.landmarks.size() << " plates, "
+            << text_map.adjacent.size() << " adjacent pairs\n";
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  Args args;
-  try {
-    args = ParseArgs(argc, argv);
-  } catch (const UsageError& e) {
-    std::cerr << "doorplate_world_maps: " << e.what() << "\n" << kUsage;
-    return 2;
-  }
-  try {
-    const dl::World world = dl::LoadWorldFile(args.world);
-    const double laser_height_m =
-        std::isnan(args.laser_height_m) ? world.sensors.laser.mount_height_m : args.laser_height_m;
-    const dl::OccupancyGrid grid = dl::RasterizeWorld(world, args.resolution_m, laser_height_m);
-    dl::SaveOccupancyMap(grid, args.out);
-    dl::TextMap text_map = dl::GroundTruthTextMap(world);
-    text_map.occupancy_map = std::filesystem::path(args.out + ".yaml").filename().string();
-    dl::SaveTextMap(text_map, args.out + ".text_map.yaml");
-    std::cout << args.out << ".{pgm,yaml}: " << grid.width << " x " << grid.height << " cells at "
-              << grid.resolution_m << " m, laser height " << laser_height_m << " m: "
-              << Count(grid, dl::OccupancyGrid::kFree) << " free, " << Count(grid, dl::OccupancyGrid::kOccupied)
-              << " occupied\n"
-              << args.out << ".text_map.yaml: " << text_map.landmarks.size() << " plates, "
-              << text_map.adjacent.size() << " adjacent pairs\n";
-  } catch (const std::exception& e) {
-    std::cerr << "doorplate_world_maps: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  return tools::RunTool("doorplate_world_maps", kUsage, ParseArgs, Run, argc, argv);
 }

@@ -54,5 +54,16 @@ TEST(YamlField, ColoursMustBeIntegerTriplets) {
   EXPECT_NE(ErrorOf([&] { root.GetColor("bad", &rgb); }).find("0..255"), std::string::npos);
 }
 
+// Found by fuzz/world_loader_fuzz (corpus: fuzz/corpus/world_loader/regression_list_as_key.yaml): a list used
+// as a key (`{id: a, from, [1, 2]}`) used to escape as yaml-cpp's BadConversion instead of a field error.
+TEST(YamlField, ListOrMappingKeysAreRejectedAsFieldErrors) {
+  const YamlField root = YamlField::Parse("walls: [{id: a, from, [1, 2]: 3}]\n{x: 1}: 2", "w.yaml");
+  const auto items = root.Child("walls").Items();
+  EXPECT_NE(ErrorOf([&] { items[0].RequireOnlyKeys({"id", "from"}); }).find("w.yaml: walls[0]: field names"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf([&] { root.RequireOnlyKeys({"walls"}); }).find("w.yaml: (top level): field names"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace doorplate_localization

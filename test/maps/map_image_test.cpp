@@ -53,6 +53,18 @@ TEST(ParsePgm, RejectsTruncatedAsciiData) {
   EXPECT_TRUE(Contains(error, "a.pgm: pixel data: truncated, expected 4 values, got 3")) << error;
 }
 
+// Found by fuzz/map_image_fuzz (fuzz/corpus/map_image/regression_huge_header): a 20-byte file claiming
+// 65536 x 65536 pixels made the parser allocate 4 GB before noticing the data was missing. The size is now
+// checked against the bytes present before any allocation.
+TEST(ParsePgm, RejectsAHugeHeaderWithoutDataBeforeAllocatingItsPixels) {
+  const std::string binary = ErrorOf<MapFileError>([] { ParsePgm("P5 65536 65536 255 ", "big.pgm"); });
+  EXPECT_TRUE(Contains(binary, "big.pgm: pixel data: truncated, expected 4294967296 bytes after the header, got 0"))
+      << binary;
+  const std::string ascii = ErrorOf<MapFileError>([] { ParsePgm("P2 65536 65536 255 7", "big.pgm"); });
+  EXPECT_TRUE(Contains(ascii, "big.pgm: pixel data: truncated, expected 4294967296 values, got at most 1"))
+      << ascii;
+}
+
 TEST(ParsePgm, RejectsTruncatedHeader) {
   const std::string error = ErrorOf<MapFileError>([] { ParsePgm("P5 4 ", "h.pgm"); });
   EXPECT_TRUE(Contains(error, "h.pgm: header: truncated")) << error;

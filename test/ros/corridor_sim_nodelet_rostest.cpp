@@ -19,32 +19,18 @@
 
 #include "corridor_sim_options.h"
 #include "doorplate_localization/sim/world_loader.h"
+#include "rostest_util.h"
 
 namespace doorplate_localization {
 namespace {
 
+using rostest_util::PrivateParam;
+using rostest_util::WaitFor;
+
 constexpr double kTimeoutS = 30.0;
 
-// Processes callbacks until `condition` holds (true) or kTimeoutS of wall time pass (false); `each` runs
-// before every check.
-bool WaitFor(const std::function<bool()>& condition, const std::function<void()>& each = [] {}) {
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(kTimeoutS);
-  while (ros::ok() && ros::WallTime::now() < deadline) {
-    each();
-    if (condition()) return true;
-    ros::getGlobalCallbackQueue()->callAvailable(ros::WallDuration(0.02));
-  }
-  return false;
-}
-
-std::string WorldParam() {
-  std::string world;
-  ros::NodeHandle("~").getParam("world", world);
-  return world;
-}
-
 TEST(CorridorSimNodelet, PublishesScanWithConfiguredBeamsSpanningTheCorridorWidth) {
-  const World world = LoadWorldFile(WorldParam());
+  const World world = LoadWorldFile(PrivateParam<std::string>("world"));
   double corridor_width_m = 0.0;
   ASSERT_TRUE(ros::NodeHandle("~").getParam("corridor_width_m", corridor_width_m));
   ros::NodeHandle nh;
@@ -112,7 +98,7 @@ TEST(CorridorSimNodelet, DrivesForwardOnCmdVelAndStopsWhenCommandsStop) {
   geometry_msgs::Twist forward;
   forward.linear.x = 0.5;
   const auto moved_m = [&] { return latest->pose.pose.position.x - first->pose.pose.position.x; };
-  EXPECT_TRUE(WaitFor([&] { return moved_m() > 0.3; }, [&] { cmd.publish(forward); })) << "moved " << moved_m();
+  EXPECT_TRUE(WaitFor([&] { return moved_m() > 0.3; }, kTimeoutS, [&] { cmd.publish(forward); })) << "moved " << moved_m();
   // No more commands: after cmd_vel_timeout_s the robot stands still.
   EXPECT_TRUE(WaitFor([&] { return latest->twist.twist.linear.x == 0.0; }));
 }
@@ -145,7 +131,7 @@ TEST(LoadCorridorSimOptions, BrokenWorldFileIsAnErrorNamingParameterAndFile) {
 
 TEST(LoadCorridorSimOptions, RejectsNegativeOrMistypedValuesNamingTheParameter) {
   ros::NodeHandle nh("~bad_values");
-  nh.setParam("world", WorldParam());
+  nh.setParam("world", PrivateParam<std::string>("world"));
   nh.setParam("real_time_factor", -1.0);
   EXPECT_THROW(LoadCorridorSimOptions(nh), ParameterError);
   nh.setParam("real_time_factor", std::string("fast"));
@@ -162,7 +148,7 @@ TEST(LoadCorridorSimOptions, RejectsNegativeOrMistypedValuesNamingTheParameter) 
 
 TEST(LoadCorridorSimOptions, ReadsValuesOverDefaults) {
   ros::NodeHandle nh("~good_values");
-  nh.setParam("world", WorldParam());
+  nh.setParam("world", PrivateParam<std::string>("world"));
   nh.setParam("seed", 42);
   nh.setParam("real_time_factor", 0.0);
   nh.setParam("laser_frame_id", std::string("front_laser"));
@@ -179,7 +165,5 @@ TEST(LoadCorridorSimOptions, ReadsValuesOverDefaults) {
 }  // namespace doorplate_localization
 
 int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "corridor_sim_checker");
-  return RUN_ALL_TESTS();
+  return doorplate_localization::rostest_util::RunCheckerTests(argc, argv, "corridor_sim_checker");
 }

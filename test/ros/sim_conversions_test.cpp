@@ -68,25 +68,6 @@ TEST(ToLaserScanMsg, RejectsNonPositiveRate) {
   EXPECT_THROW(ToLaserScanMsg(SimulatedScan{}, 0.0, "laser", ros::Time(1, 0)), std::invalid_argument);
 }
 
-TEST(ToTransformStampedMsg, CarriesFramesPositionHeightAndYaw) {
-  const Pose2D pose{1.5, -2.0, 0.75};
-  const geometry_msgs::TransformStamped msg = ToTransformStampedMsg(pose, "odom", "base_link", ros::Time(3, 0), 0.25);
-  EXPECT_EQ("odom", msg.header.frame_id);
-  EXPECT_EQ("base_link", msg.child_frame_id);
-  EXPECT_EQ(ros::Time(3, 0), msg.header.stamp);
-  EXPECT_DOUBLE_EQ(1.5, msg.transform.translation.x);
-  EXPECT_DOUBLE_EQ(-2.0, msg.transform.translation.y);
-  EXPECT_DOUBLE_EQ(0.25, msg.transform.translation.z);
-  EXPECT_NEAR(0.75, YawOf(msg.transform.rotation), 1e-12);
-}
-
-TEST(ToPoseMsg, WrapsYawBeyondPiToTheSameOrientation) {
-  const geometry_msgs::Pose msg = ToPoseMsg(Pose2D{0.0, 0.0, 3.0 * M_PI / 2.0});
-  EXPECT_NEAR(-M_PI / 2.0, YawOf(msg.orientation), 1e-12);
-  const tf2::Quaternion q = ToTf(msg.orientation);
-  EXPECT_NEAR(1.0, q.length(), 1e-12);
-}
-
 TEST(ToOdometryMsg, PutsPoseInFrameAndTwistInChildFrameWithPlanarCovariance) {
   const nav_msgs::Odometry msg = ToOdometryMsg(Pose2D{4.0, 1.0, M_PI / 2.0}, 0.6, -0.3, "odom", "base_link",
                                                ros::Time(7, 0), PlanarVariance{0.01, 0.02, 0.03},

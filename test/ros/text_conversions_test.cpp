@@ -97,19 +97,6 @@ TEST(FromTextDetectionMsg, RoundTripsTheFieldsTheMessageCarries) {
   EXPECT_EQ(back.observed_frame_count, 0);
 }
 
-TEST(ValidateTextDetection, AcceptsAReportAndNamesTheBrokenField) {
-  TextDetection msg = ToTextDetectionMsg(Report());
-  EXPECT_EQ(ValidateTextDetection(msg), "");
-  msg.bearing_rad = std::numeric_limits<float>::quiet_NaN();
-  EXPECT_NE(ValidateTextDetection(msg).find("bearing_rad"), std::string::npos);
-  msg = ToTextDetectionMsg(Report());
-  msg.confidence = 1.5f;
-  EXPECT_NE(ValidateTextDetection(msg).find("confidence"), std::string::npos);
-  msg = ToTextDetectionMsg(Report());
-  msg.text.clear();
-  EXPECT_EQ(ValidateTextDetection(msg), "text is empty");
-}
-
 TEST(ReadCameraGeometry, TakesSizeFocalLengthAndPrincipalColumnFromK) {
   CameraGeometry g;
   ASSERT_EQ(ReadCameraGeometry(Info(800, 600, 700.0, 401.5), &g), "");

@@ -24,22 +24,12 @@
 
 #include "doorplate_localization/TextDetectionArray.h"
 #include "text_extractor_options.h"
+#include "rostest_util.h"
 
 namespace doorplate_localization {
 namespace {
 
-// Processes callbacks until `condition` holds (true) or `timeout_s` of wall time pass (false); `each` runs
-// before every check.
-bool WaitFor(const std::function<bool()>& condition, double timeout_s = 30.0,
-             const std::function<void()>& each = [] {}) {
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(timeout_s);
-  while (ros::ok() && ros::WallTime::now() < deadline) {
-    each();
-    if (condition()) return true;
-    ros::getGlobalCallbackQueue()->callAvailable(ros::WallDuration(0.02));
-  }
-  return false;
-}
+using rostest_util::WaitFor;
 
 // Nodes subscribed to `topic` (resolved name), from the master.
 std::set<std::string> SubscribersOf(const std::string& topic) {
@@ -101,12 +91,7 @@ TEST(LoadTextExtractorOptions, ReadsNestedValuesAndKnownRooms) {
 
 // Expects LoadTextExtractorOptions to throw a ParameterError whose message contains `parameter` resolved.
 void ExpectErrorNaming(const ros::NodeHandle& nh, const std::string& parameter) {
-  try {
-    LoadTextExtractorOptions(nh);
-    ADD_FAILURE() << "no error for " << parameter;
-  } catch (const ParameterError& e) {
-    EXPECT_NE(std::string(e.what()).find(nh.resolveName(parameter)), std::string::npos) << e.what();
-  }
+  rostest_util::ExpectLoadErrorNaming<ParameterError>(LoadTextExtractorOptions, nh, parameter);
 }
 
 TEST(LoadTextExtractorOptions, RejectsOutOfRangeMistypedAndInconsistentValuesNamingTheParameter) {
@@ -212,24 +197,13 @@ TEST(TextExtractorNodelet, SubscribesToTheCameraOnlyWhileItsOutputIsWanted) {
 
 TEST(TextExtractorNodelet, DropsBadImagesWithAnErrorNamingTheTopicAndKeepsPublishing) {
   ros::NodeHandle nh;
-  std::vector<std::string> errors;
-  const auto on_log = [&](const rosgraph_msgs::Log::ConstPtr& m) {
-    if (m->level == rosgraph_msgs::Log::ERROR && m->msg.find("/camera/image_raw") != std::string::npos) {
-      errors.push_back(m->msg);
-    }
-  };
-  ros::Subscriber log_sub = nh.subscribe<rosgraph_msgs::Log>("/rosout", 100, on_log);
+  const rostest_util::RosoutLog errors(rosgraph_msgs::Log::ERROR);
   int arrays = 0;
   ros::Subscriber sub = nh.subscribe<TextDetectionArray>(
       "text_detections", 10, [&](const TextDetectionArray::ConstPtr&) { ++arrays; });
   ros::Publisher bad_pub = nh.advertise<sensor_msgs::Image>("camera/image_raw", 1);
   ASSERT_TRUE(WaitFor(ManagerSubscribesToTheCamera));
-  const auto contains = [&](const std::string& text) {
-    for (const std::string& e : errors) {
-      if (e.find(text) != std::string::npos) return true;
-    }
-    return false;
-  };
+  const auto contains = [&](const std::string& text) { return errors.Has("/camera/image_raw", text); };
   sensor_msgs::Image bad;
   bad.encoding = "32FC1";
   bad.width = 640;
@@ -297,8 +271,5 @@ TEST(TextExtractorNodelet, ReadsTheNorthWallPlatesOnceEachWithASmallBearingAtThe
 }  // namespace doorplate_localization
 
 int main(int argc, char** argv) {
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "text_extractor_checker");
-  ros::NodeHandle keep_node_alive;  // the node would shut down each time a test's last handle goes
-  return RUN_ALL_TESTS();
+  return doorplate_localization::rostest_util::RunCheckerTests(argc, argv, "text_extractor_checker");
 }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -188,6 +189,82 @@ TEST(RbpfSlam, RejectsAScanWithoutGeometry) {
   RangeScan scan;
   scan.ranges_m = {1.0f, 2.0f};
   EXPECT_THROW(slam.AddScan(scan, {}, 0), std::invalid_argument);
+}
+
+TEST(RbpfSlam, TheDegeneracyAwareProposalFindsTheCorridorAxisAndLeavesPositionAlongItToOdometry) {
+  // A featureless corridor: every scan is degenerate along x. Odometry reads exactly; the proposal's
+  // position along x must stay the particle's odometry sample, so the best particle ends within the
+  // motion model's spread of the true 6 m (not where a flat likelihood would leave it).
+  RbpfSlamOptions options = FewParticles(10);
+  options.degenerate_min_points = 10.0;
+  options.motion.trans_stddev_m_per_m = 0.02;
+  RbpfSlam slam(options);
+  for (int i = 0; i <= 12; ++i) {
+    const Pose2D pose{0.5 * i, 0.0, 0.0};
+    slam.AddScan(test::Scan(test::Corridor(), pose), pose, i);
+  }
+  EXPECT_EQ(slam.stats().scans_processed, 13);
+  EXPECT_EQ(slam.stats().degenerate_scans, 12);  // all but the first
+  EXPECT_NEAR(slam.BestParticle().pose.x_m, 6.0, 0.25);
+  EXPECT_NEAR(slam.BestParticle().pose.y_m, 0.0, 0.05);  // across the corridor the walls decide
+}
+
+TEST(RbpfSlam, AScanOfARoomIsNotDegenerate) {
+  RbpfSlamOptions options = FewParticles(3);
+  options.degenerate_min_points = 10.0;
+  RbpfSlam slam(options);
+  for (int i = 0; i <= 4; ++i) {
+    const Pose2D pose{-1.0 + 0.5 * i, 0.0, 0.0};
+    slam.AddScan(test::Scan(test::Room(), pose), pose, i);
+  }
+  EXPECT_EQ(slam.stats().scans_processed, 5);
+  EXPECT_EQ(slam.stats().degenerate_scans, 0);
+}
+
+TEST(RbpfSlam, BeamsWithoutEchoDoNotClearFreeSpaceThroughAWallTheMapHolds) {
+  // The first scan maps the room's walls; the second one, 0.6 m on, loses the echoes of every beam
+  // towards the +y wall (laser dropouts, +inf). They may clear the room up to that wall, not the 10 m
+  // (no_return_clear_range_m) behind it.
+  RbpfSlam slam(FewParticles(1));
+  slam.AddScan(test::Scan(test::Room(), {0, 0, 0}), {0, 0, 0}, 0);
+  const Pose2D pose{0.6, 0, 0};
+  RangeScan scan = test::Scan(test::Room(), pose);
+  int dropouts = 0;
+  for (int i = 0; i < static_cast<int>(scan.ranges_m.size()); ++i) {
+    const double a = scan.BeamAngle(i);
+    if (a > 1.3 && a < 1.8) scan.ranges_m[i] = std::numeric_limits<float>::infinity(), ++dropouts;
+  }
+  ASSERT_GT(dropouts, 20);
+  ASSERT_TRUE(slam.AddScan(scan, pose, 1));
+  const TiledGrid& map = slam.BestParticle().map;
+  EXPECT_LT(map.LogOdds(map.CellOf({0.6, 1.5})), 0.0);  // inside the room: cleared
+  int observed_behind = 0;  // cells beyond the wall (y > 2.05) in front of the dropouts
+  for (int cx = map.CellOf({-0.2, 0}).x; cx <= map.CellOf({1.4, 0}).x; ++cx) {
+    for (int cy = map.CellOf({0, 2.15}).y; cy <= map.CellOf({0, 5.0}).y; ++cy) observed_behind += map.Observed({cx, cy});
+  }
+  EXPECT_EQ(observed_behind, 0);
+}
+
+TEST(RbpfSlam, WhereTheScanFixesPositionTheDegeneracyAwareProposalKeepsTheWholeCorrection) {
+  // In a room every scan constrains position in both directions (λ far above 2·degenerate_min_points),
+  // so the degeneracy-aware proposal must not hold back any of the match's correction of 10 %-long
+  // odometry: the filter ends exactly where the plain filter does.
+  RbpfSlamOptions plain = FewParticles(5);
+  RbpfSlamOptions aware = plain;
+  aware.degenerate_min_points = 10.0;
+  RbpfSlam a(plain), b(aware);
+  for (int i = 0; i <= 6; ++i) {
+    const Pose2D truth{-1.5 + 0.5 * i, 0.2 * std::sin(i), 0.0};
+    const Pose2D odometry{1.1 * truth.x_m, 1.1 * truth.y_m, 0.0};
+    a.AddScan(test::Scan(test::Room(), truth), odometry, i);
+    b.AddScan(test::Scan(test::Room(), truth), odometry, i);
+  }
+  EXPECT_EQ(b.stats().degenerate_scans, 0);
+  EXPECT_EQ(a.BestParticle().pose.x_m, b.BestParticle().pose.x_m);
+  EXPECT_EQ(a.BestParticle().pose.y_m, b.BestParticle().pose.y_m);
+  // The map frame is the odometry frame at the first scan (x = -1.65): 3 m later the truth is at 1.35,
+  // the odometry at 1.65.
+  EXPECT_NEAR(b.BestParticle().pose.x_m, 1.35, 0.1);
 }
 
 }  // namespace

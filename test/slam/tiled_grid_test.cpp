@@ -49,6 +49,30 @@ TEST(TiledGrid, ABeamFreesTheCellsItCrossesAndMarksItsEnd) {
   EXPECT_LT(grid.LogOdds({10, 1}), 0.0);
 }
 
+TEST(TiledGrid, ABeamWithoutEchoStopsBeforeTheFirstObstacleAndLeavesItAlone) {
+  TiledGrid grid(Options());
+  grid.UpdateCell({5, 0}, 0.9);  // an obstacle 5 cells out
+  const double wall = grid.LogOdds({5, 0});
+  grid.IntegrateNoReturnBeam({0.05, 0.05}, {1.05, 0.05});
+  for (int x = 0; x < 5; ++x) EXPECT_LT(grid.LogOdds({x, 0}), 0.0) << x;
+  EXPECT_EQ(grid.LogOdds({5, 0}), wall);
+  EXPECT_TRUE(grid.IsObstacle({5, 0}));
+  for (int x = 6; x <= 10; ++x) EXPECT_FALSE(grid.Observed({x, 0})) << x;
+  grid.IntegrateNoReturnBeam({0.05, 0.15}, {1.05, 0.15});  // nothing known in the way: clears to the end
+  for (int x = 0; x <= 10; ++x) EXPECT_LT(grid.LogOdds({x, 1}), 0.0) << x;
+}
+
+TEST(TiledGrid, ABeamWithoutEchoDoesNotSlipDiagonallyThroughAStaircaseWall) {
+  TiledGrid grid(Options());
+  grid.UpdateCell({2, 1}, 0.9);  // a wall along the anti-diagonal: (2, 1) and (1, 2) touch at a corner
+  grid.UpdateCell({1, 2}, 0.9);
+  grid.IntegrateNoReturnBeam({0.05, 0.05}, {0.55, 0.55});  // the diagonal through cells (k, k)
+  EXPECT_LT(grid.LogOdds({1, 1}), 0.0);
+  for (int k = 2; k <= 5; ++k) EXPECT_FALSE(grid.Observed({k, k})) << k;
+  grid.IntegrateBeam({0.05, 0.05}, {0.55, 0.55}, true);  // an echo beyond it is evidence: it passes
+  EXPECT_GT(grid.LogOdds({5, 5}), 0.0);
+}
+
 TEST(TiledGrid, DistanceFieldHoldsSquaredCellDistancesToTheNearestObstacle) {
   TiledGrid grid(Options());
   grid.UpdateCell({0, 0}, 0.9);  // above occupied_log_odds (0.5): an obstacle

@@ -22,7 +22,10 @@ class MapFileError : public std::runtime_error {
 OccupancyGrid LoadOccupancyMap(const std::string& yaml_path);
 
 // Writes `<base>.pgm` and `<base>.yaml` (trinary: 254 free, 0 occupied, 205 unknown; thresholds 0.65/0.196)
-// atomically; the YAML names the image by its file name. Throws MapFileError naming the file on failure.
+// atomically; the YAML names the image by its file name. Both carry a "# doorplate_localization save <id>"
+// comment (id: a hash of the content); while the two renames happen the previous image is kept as `<base>.pgm.prev`, so a process
+// killed mid-save leaves the previous or the new map, as LoadOccupancyMap reads them (it picks `.prev`
+// when the image's id differs from the YAML's). Throws MapFileError naming the file on failure.
 void SaveOccupancyMap(const OccupancyGrid& grid, const std::string& base_path);
 
 // Writes `text` to `path` atomically (write `path`.tmp.<pid>, fsync, rename). Throws std::runtime_error naming

@@ -4,10 +4,12 @@
 // `laser_pose` places the laser frame in base_link. Units: metres, radians.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "doorplate_localization/common/geometry2d.h"
+#include "doorplate_localization/mcl/plate_reading.h"
 
 namespace doorplate_localization {
 
@@ -57,5 +59,22 @@ double EffectiveMaxRange(const LocalizationScan& scan, const BeamSelectionOption
 // included: index round(i (N-1) / (M-1))), classifies them and drops kInvalid ones. Throws
 // std::invalid_argument naming the field when the scan or the options are unusable.
 std::vector<SelectedBeam> SelectBeams(const LocalizationScan& scan, const BeamSelectionOptions& options);
+
+// --- a plate's range from the laser (the paper's text observation z = (text, bearing, range)) ---
+// The laser range from base_link to the first obstacle seen at `bearing_rad` (base_link frame, radians
+// counter-clockwise): among the echo beams (ClassifyRange == kHit), the one whose end point, placed in
+// base_link through scan.laser_pose (so a laser mounted off base_link's origin is handled), lies closest
+// in bearing seen from base_link, if within `max_bearing_error_rad`; its distance from base_link in metres
+// (the reading itself, exactly, for a laser at base_link's origin). nullopt when there is no such beam,
+// the scan is empty or has a zero angle increment, or the bearing is not finite. The Text AMCL nodelet and
+// the localization experiment both measure plate ranges with it.
+std::optional<double> RangeAlongBearing(const LocalizationScan& scan, double bearing_rad,
+                                        double max_bearing_error_rad);
+
+// A plate reading of `text` with `confidence`, seen at `bearing_rad` in base_link (wrapped to (-pi, pi];
+// a non-finite bearing is kept as given, for ValidatePlateReading to name), with `range_m` (metres,
+// base_link -> plate; nullopt = unknown) and camera side unknown. Callers validate it.
+PlateReading PlateReadingAt(const std::string& text, double confidence, double bearing_rad,
+                            std::optional<double> range_m);
 
 }  // namespace doorplate_localization

@@ -15,6 +15,7 @@
 #include <sensor_msgs/LaserScan.h>
 
 #include "doorplate_localization/common/geometry2d.h"
+#include "doorplate_localization/ros/pose_conversions.h"  // ToPoseMsg, ToTransformStampedMsg, ...
 #include "doorplate_localization/sim/camera_renderer.h"
 #include "doorplate_localization/sim/laser_simulator.h"
 #include "doorplate_localization/sim/sensor_options.h"
@@ -30,13 +31,6 @@ ros::Time SimTime(double time_s);
 // Throws std::invalid_argument if rate_hz <= 0.
 sensor_msgs::LaserScan ToLaserScanMsg(const SimulatedScan& scan, double rate_hz, const std::string& frame_id,
                                       const ros::Time& stamp);
-
-// A planar pose (child in parent) as a 3D pose / transform at height z_m; rotation is yaw only.
-geometry_msgs::Pose ToPoseMsg(const Pose2D& pose, double z_m = 0.0);
-geometry_msgs::Transform ToTransformMsg(const Pose2D& pose, double z_m = 0.0);
-geometry_msgs::TransformStamped ToTransformStampedMsg(const Pose2D& child_in_parent, const std::string& parent_frame,
-                                                      const std::string& child_frame, const ros::Time& stamp,
-                                                      double z_m = 0.0);
 
 // Diagonal variances of a planar pose or twist; the message's other entries (z, roll, pitch and all
 // cross terms) stay 0: a planar robot has exactly zero z, roll and pitch. All zero means "not estimated".

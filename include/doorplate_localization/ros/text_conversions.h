@@ -30,14 +30,10 @@ TextDetection ToTextDetectionMsg(const PlateReport& report);
 // report (often none).
 TextDetectionArray ToTextDetectionArrayMsg(const std::vector<PlateReport>& reports, const std_msgs::Header& header);
 
-// The reverse, for consumers (mapping, localization): text, confidence, box_px, bearing_rad,
-// voted_frame_count and stamp_s = `stamp` (the array header's). The fields the message does not carry
-// (vote_share, mean_confidence, observed_frame_count, track_id) are 0.
+// The reverse: text, confidence, box_px, bearing_rad, voted_frame_count and stamp_s = `stamp` (the array
+// header's). The fields the message does not carry (vote_share, mean_confidence, observed_frame_count,
+// track_id) are 0. (Consumers check a received detection with text_detection_conversions.h.)
 PlateReport FromTextDetectionMsg(const TextDetection& msg, const ros::Time& stamp);
-
-// Returns "" if a received detection is usable, else what is wrong with it: "text is empty",
-// "bearing_rad must be finite and within ±pi/2, got nan", "confidence must be in [0, 1], got 1.5".
-std::string ValidateTextDetection(const TextDetection& msg);
 
 // What the extractor needs from camera_info: the image size and the pinhole focal length and principal
 // point column (pixels), which turn image columns into bearings.

@@ -17,6 +17,7 @@
 #include "doorplate_localization/slam/motion_model.h"
 #include "doorplate_localization/slam/range_scan.h"
 #include "doorplate_localization/slam/scan_matcher.h"
+#include "doorplate_localization/slam/slam_landmark.h"
 #include "doorplate_localization/slam/tiled_grid.h"
 #include "doorplate_localization/slam/trajectory_tree.h"
 
@@ -31,7 +32,18 @@ struct RbpfSlamOptions {
   double max_usable_range_m = 30.0;    // longer beams only clear free space, up to here
   double no_return_clear_range_m = 10.0;  // beams without echo (+inf) clear free space up to here
   int max_match_points = 360;          // scan points used by the matcher (evenly subsampled)
+  // Echoes longer than this are mapped but not matched (0: no limit). Set it a little below the laser's
+  // range: the map ends where the previous scans reached, so the last metre of a scan lands in unknown
+  // cells ahead, and matching it pulls the pose back (a corridor map shrinks; docs/slam.md).
+  double max_match_range_m = 0.0;
   double mean_trajectory_radius_m = 0.5;  // MeanTrajectory() averages histories this close to the best
+  // Degeneracy-aware proposal (docs/slam.md): the scan's surface normals give its information about
+  // position, Σ n nᵀ over echoes with a local line fit (in "points": a wall seen head-on by k beams adds
+  // k along its normal). Along the eigenvector of the smaller eigenvalue λ (a corridor's axis) the
+  // proposal keeps the share clamp((λ − k)/k, 0, 1) of the match's correction, k = this: none below k
+  // (odometry only: the particle's odometry sample), all of it above 2k (e.g. an end wall in range);
+  // across it the match wins. 0 = off (the laser-only default, as on the real logs).
+  double degenerate_min_points = 0.0;
   std::uint64_t seed = 1;
   TiledGridOptions grid;
   ScanMatcherOptions matcher;
@@ -44,6 +56,7 @@ struct SlamParticle {
   double log_score = 0.0;        // tempered log-likelihood of the whole history (ranks particles)
   TiledGrid map;
   TrajectoryHandle trajectory;   // newest node; ancestors shared with other particles
+  SlamLandmarksHandle landmarks; // text landmarks (text_slam.h); shared with other particles, null if none
 };
 
 // Counters over the whole run, for progress lines and tests.
@@ -54,6 +67,7 @@ struct RbpfSlamStats {
   long matches = 0;        // per-particle proposals that used the scan match
   long weak_matches = 0;   // ...that kept the odometry prediction (weak match)
   long rejected_jumps = 0; // ...that kept it because the match jumped too far
+  int degenerate_scans = 0; // processed scans whose position was constrained along one axis only
   double last_neff = 0.0;
 };
 
@@ -70,6 +84,10 @@ class RbpfSlam {
   // with the particle itself; adds the result to its log-weight (untempered) and resamples if Neff
   // drops below the threshold.
   void ReweightParticles(const std::function<double(const SlamParticle&)>& log_likelihood);
+  // The same, but the callback may also replace the particle's landmarks (*landmarks starts as the
+  // particle's own handle). Resampling then copies the new handles.
+  void UpdateLandmarksAndReweight(
+      const std::function<double(const SlamParticle&, SlamLandmarksHandle* landmarks)>& update);
 
   const std::vector<SlamParticle>& particles() const { return particles_; }
   // The particle with the highest weight (ties: highest history score).
@@ -84,13 +102,22 @@ class RbpfSlam {
   // Bytes held by the tiles of all particles' maps, each shared tile counted once.
   std::size_t MapMemoryBytes() const;
   const RbpfSlamStats& stats() const { return stats_; }
+  // True once the first scan was added (the map frame exists).
+  bool started() const { return started_; }
+  // Odometry pose (base_link in odom) at the last processed scan: a particle's pose at another odometry
+  // pose o is particle.pose ⊕ (LastProcessedOdometry()⁻¹ ⊕ o).
+  const Pose2D& LastProcessedOdometry() const { return last_odometry_; }
   const RbpfSlamOptions& options() const { return options_; }
 
  private:
   struct ScanPoints {
     Vec2 origin;                                   // the laser in base_link
     std::vector<Vec2> match;                       // endpoints used by the matcher, base_link
-    std::vector<std::pair<Vec2, bool>> integrate;  // every usable beam's end and whether it hit
+    enum class BeamEnd { kHit, kCut, kNoReturn };  // echo; echo beyond the usable range; no echo (+inf)
+    std::vector<std::pair<Vec2, BeamEnd>> integrate;  // every usable beam's end (base_link) and kind
+    Vec2 degenerate_axis;                          // base_link unit vector the scan does not fix...
+    bool degenerate = false;                       // ...if its information is below degenerate_min_points
+    double along_axis_gain = 1.0;                  // share of the correction kept along that axis, 0-1
   };
   ScanPoints PrepareScan(const RangeScan& scan) const;
   int BestIndex() const;

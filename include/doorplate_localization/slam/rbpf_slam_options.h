@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "doorplate_localization/slam/rbpf_slam.h"
+#include "doorplate_localization/slam/text_slam.h"
 
 namespace doorplate_localization {
 
@@ -20,5 +21,11 @@ void SetRbpfSlamOption(const std::string& name, double value, RbpfSlamOptions* o
 
 // The current value of option `name`; throws std::invalid_argument if the name is unknown.
 double GetRbpfSlamOption(const std::string& name, const RbpfSlamOptions& options);
+
+// TextSlamOptions by name: every RbpfSlamOptions name above (for options.slam) plus "text.<field>" for
+// the text fields ("text.min_confidence", "text.plate_sigma_m", ...). Same errors as above.
+std::vector<std::string> TextSlamOptionNames();
+void SetTextSlamOption(const std::string& name, double value, TextSlamOptions* options);
+double GetTextSlamOption(const std::string& name, const TextSlamOptions& options);
 
 }  // namespace doorplate_localization

@@ -102,6 +102,11 @@ class TiledGrid {
   // One beam from `from` to `to` (map frame): every cell on the way gets a miss, the last cell a hit
   // if `hit`, else a miss too (a beam without echo, or cut at the usable range).
   void IntegrateBeam(Vec2 from, Vec2 to, bool hit);
+  // A beam without echo (+inf, REP-117: a dropout, glass, or nothing in range): misses from `from`
+  // towards `to`, stopping before the first cell this grid already holds as an obstacle (or a diagonal
+  // step past one: Bresenham lines cross a staircase wall between its cells). A missing echo says
+  // nothing about what lies behind a wall the map knows, so it must not clear free space through it.
+  void IntegrateNoReturnBeam(Vec2 from, Vec2 to);
 
   // Inclusive cell bounds of all observed tiles; false if the grid is empty.
   bool Bounds(CellIndex* min_cell, CellIndex* max_cell) const;
@@ -119,6 +124,9 @@ class TiledGrid {
   Tile* MutableTile(int tile_x, int tile_y);
   std::uint8_t& MutableDist2(CellIndex c);
   void UpdateCellInTile(Tile* tile, CellIndex c, int delta);
+  // Misses along the beam, `last_delta` on its last cell; with `stop_at_obstacle`, ends before the
+  // first obstacle cell (which is left unchanged).
+  void WalkBeam(Vec2 from, Vec2 to, int last_delta, bool stop_at_obstacle);
   void AddObstacle(CellIndex c);
   void RemoveObstacle(CellIndex c);
   void Grow(int tile_x, int tile_y);

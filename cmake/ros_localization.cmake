@@ -1,0 +1,24 @@
+# Text AMCL nodelet (issue 6): amcl's ROS interface over the ROS-free doorplate_mcl core. A library of its
+# own (no simulator, no Tesseract) so a robot can load the localizer alone; the shared conversions come
+# from doorplate_ros_conversions (cmake/ros.cmake).
+add_library(doorplate_localization_nodelet
+  src/ros/amcl_conversions.cpp
+  src/ros/text_amcl_options.cpp
+  src/ros/text_amcl_nodelet.cpp)
+target_include_directories(doorplate_localization_nodelet PUBLIC include PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(doorplate_localization_nodelet doorplate_ros_conversions doorplate_mcl doorplate_maps
+                      ${catkin_LIBRARIES})
+add_dependencies(doorplate_localization_nodelet ${PROJECT_NAME}_generate_messages_cpp)
+install(TARGETS doorplate_localization_nodelet LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
+
+if(CATKIN_ENABLE_TESTING)
+  catkin_add_gtest(amcl_conversions_test test/ros/amcl_conversions_test.cpp)
+  target_include_directories(amcl_conversions_test PRIVATE ${catkin_INCLUDE_DIRS})
+  target_link_libraries(amcl_conversions_test doorplate_localization_nodelet GTest::gtest_main ${catkin_LIBRARIES})
+
+  # Sim + wall follower + text extractor + Text AMCL in one manager: global localization in a symmetric
+  # corridor converges to the true pose. The checker also tests LoadTextAmclOptions (needs a parameter server).
+  add_rostest_gtest(text_amcl_nodelet_rostest test/ros/text_amcl_nodelet.test test/ros/text_amcl_nodelet_rostest.cpp)
+  target_include_directories(text_amcl_nodelet_rostest PRIVATE src/ros ${catkin_INCLUDE_DIRS})
+  target_link_libraries(text_amcl_nodelet_rostest doorplate_localization_nodelet ${catkin_LIBRARIES})
+endif()

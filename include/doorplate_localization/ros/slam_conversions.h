@@ -1,0 +1,84 @@
+// Conversions between ROS messages and the SLAM core's types (slam/text_slam.h), shared by the mapping
+// nodelet (SlamMappingNodelet) and the offline bag mapper (doorplate_map_bag); poses, map -> odom, grids,
+// landmark markers and camera axes are shared with the other nodelets (pose_conversions.h,
+// map_conversions.h). Pure functions: no node handle, no clock, no tf buffer. Units: metres, radians,
+// REP-103 frames (x forward, y left, z up).
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <geometry_msgs/Transform.h>
+#include <ros/time.h>
+#include <sensor_msgs/LaserScan.h>
+
+#include "doorplate_localization/TextDetection.h"
+#include "doorplate_localization/TextDetectionArray.h"
+#include "doorplate_localization/ros/pose_conversions.h"
+#include "doorplate_localization/slam/range_scan.h"
+#include "doorplate_localization/slam/rbpf_slam.h"
+#include "doorplate_localization/slam/text_slam.h"
+
+namespace doorplate_localization {
+
+// Where a laser sits on the robot: its pose in base_link, and whether it is mounted upside down (its z
+// axis points down, so its beam angles turn clockwise seen from above).
+struct LaserMounting {
+  Pose2D pose;
+  bool upside_down = false;
+};
+
+// Reads the mounting from the transform base_link → laser frame. Returns "" or the problem: a non-finite
+// transform, or a laser whose scan plane is tilted more than ~8° from the floor plane (no 2D map then).
+std::string ToLaserMounting(const geometry_msgs::Transform& base_to_laser, LaserMounting* mounting);
+
+// Converts a LaserScan into the core's RangeScan (beam angles in the laser frame, upside-down mountings
+// mirrored, `laser_pose` = the mounting's pose). Readings: +inf, or >= `max_range_m` (<= 0: the scan's
+// range_max) or > range_max, mean "no echo" (+inf: free space up to the core's clear range); NaN, -inf
+// and readings below range_min are invalid (NaN, skipped). Returns "" and fills *out, or the problem
+// (ValidateScan's, ranges that do not fit angle_min..angle_max, or fewer than `min_valid_beams`
+// finite returns); *out is left alone on error.
+std::string ToRangeScan(const sensor_msgs::LaserScan& msg, const LaserMounting& mounting, double max_range_m,
+                        int min_valid_beams, RangeScan* out);
+
+// A detection as a SLAM plate sighting: the bearing composed with the camera axis (base_link, CCW:
+// camera.yaw_rad + camera.bearing_sign * bearing_rad, wrapped to (-pi, pi]), the confidence, no range
+// (the SLAM takes it from the last scan). nullopt, with *why_not set, for detections the mapper does not
+// use: not at the image-centre crossing, an empty text, or a detection ValidateTextDetection rejects.
+std::optional<PlateSighting> ToPlateSighting(const TextDetection& msg, const CameraAxis& camera,
+                                             std::string* why_not);
+
+// A tf lookup: the transform `target` <- `source` at `stamp` (i.e. `source` expressed in `target`), or
+// nullopt with *problem set. The nodelet wraps its tf2_ros::Buffer, doorplate_map_bag a tf2::BufferCore.
+using TransformLookup = std::function<std::optional<geometry_msgs::Transform>(
+    const std::string& target, const std::string& source, const ros::Time& stamp, std::string* problem)>;
+
+// Frames and scan handling shared by the nodelet and the bag mapper (SlamMappingNodeOptions' fields).
+struct SlamInputFrames {
+  std::string odom_frame = "odom";
+  std::string base_frame = "base_link";
+  double max_range_m = 0.0;   // see ToRangeScan
+  int min_valid_beams = 10;
+};
+
+// One LaserScan as the SLAM takes it: the mounting from tf base_frame -> scan frame, the odometry pose
+// (base_frame in odom_frame) at the scan's stamp, and the converted scan. Returns "" or the problem.
+std::string PrepareSlamScan(const sensor_msgs::LaserScan& msg, const TransformLookup& lookup,
+                            const SlamInputFrames& frames, RangeScan* scan, Pose2D* odometry_pose);
+
+// One TextDetectionArray as plate sightings (ToPlateSighting; the camera axis from tf base_frame ->
+// header.frame_id) and the odometry pose at its stamp. Returns "" or the problem with the tf; detections
+// dropped for a reason other than "not at the crossing" / "text is empty" are listed in *rejected as
+// "'<text>': <why>".
+std::string PrepareSlamSightings(const TextDetectionArray& msg, const TransformLookup& lookup,
+                                 const SlamInputFrames& frames, std::vector<PlateSighting>* sightings,
+                                 Pose2D* odometry_pose, std::vector<std::string>* rejected);
+
+// gmapping's ~entropy: the entropy of the particle poses as one weighted Gaussian (x, y, theta),
+// ½ ln((2πe)³ det Σ), nats; weights from the particles' log-weights. Lower = more concentrated.
+// Degenerate covariances (all particles on one pose) give a large negative value, never NaN.
+double PoseEntropy(const std::vector<SlamParticle>& particles);
+
+}  // namespace doorplate_localization

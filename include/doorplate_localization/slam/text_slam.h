@@ -1,0 +1,104 @@
+// RBPF SLAM with doorplate text landmarks (the seed paper's mapping stage, Sec. 3.3, eqs. 13-14): the
+// laser RBPF (rbpf_slam.h) plus, per particle, the plates it has mapped. A plate's position is the
+// particle's pose at the reading ⊕ (bearing, range) (range from the reading or the last scan's beam).
+// A new text adds a landmark to every particle; re-reading a text near one of a particle's landmarks
+// reweights the particle by how well the two positions agree (Gaussian in the wall-axis distance), which
+// keeps the particles whose trajectory brought them back to the same plate (loop closure).
+// Per-particle landmark lists are immutable shared nodes (like the trajectory tree), so resampling
+// copies pointers. Adjacent-plate distances are also measured by odometry (eq. 13) for the text map.
+// The laser filter runs with the degeneracy-aware proposal on (DefaultTextSlamLaserOptions).
+// Frames: the map frame is the odometry frame at the first scan; base_link poses; plates on the floor
+// plane. Units: metres, radians. See docs/slam.md for the design choices and their measurements.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "doorplate_localization/maps/occupancy_grid.h"
+#include "doorplate_localization/maps/text_map.h"
+#include "doorplate_localization/slam/rbpf_slam.h"
+
+namespace doorplate_localization {
+
+// The laser filter's options for text SLAM: RbpfSlamOptions' defaults plus the degeneracy-aware proposal
+// (degenerate_min_points = 10; docs/slam.md, measured on paper_real_corridor).
+RbpfSlamOptions DefaultTextSlamLaserOptions();
+
+struct TextSlamOptions {
+  RbpfSlamOptions slam = DefaultTextSlamLaserOptions();
+  double min_confidence = 0.5;          // readings less sure than this are ignored
+  double min_plate_range_m = 0.2;       // plate ranges outside [min, max] are ignored (bad beam)
+  double max_plate_range_m = 5.0;
+  double range_beam_window_rad = 0.03;  // range from the last scan: median of beams within ± this
+  double plate_sigma_m = 0.15;          // 1-sigma error of one plate position measurement
+  double association_radius_m = 3.0;    // a same-text reading this close to a particle's landmark re-observes it
+  double text_likelihood_gain = 1.0;    // multiplies the re-observation log-likelihood
+  double max_odometry_gap_m = 2.0;      // readings further (odometry) from the last processed scan are ignored
+};
+
+// One doorplate reading, made at the time of the odometry pose passed with it.
+struct PlateSighting {
+  std::string text;                 // the validated room number, e.g. "214"; not empty
+  double confidence = 1.0;          // probability that `text` is right, [0, 1]
+  double bearing_rad = 0.0;         // plate centre seen from base_link, CCW from x forward, [-pi, pi]
+  std::optional<double> range_m;    // base_link -> plate centre on the floor plane; unset: from the last scan
+};
+
+enum class PlateOutcome {
+  kNewLandmark,          // used: first reading of this text near here, a landmark was added
+  kReobserved,           // used: matched an existing landmark, particles were reweighted
+  kLowConfidence,        // ignored: confidence < min_confidence
+  kNoRange,              // ignored: no range given and no usable beam along the bearing
+  kRangeOutOfBounds,     // ignored: range outside [min_plate_range_m, max_plate_range_m]
+  kNoScanYet,            // ignored: no scan processed yet (the map frame is not defined)
+  kTooFarFromLastScan,   // ignored: odometry moved more than max_odometry_gap_m since the last scan
+};
+
+struct TextSlamPlateResult {
+  PlateOutcome outcome = PlateOutcome::kNoScanYet;
+  int landmark_index = -1;     // index in BuildTextMap().landmarks (best particle) if used, else -1
+  double range_m = 0.0;        // the range used (given or from the scan), 0 if none
+  std::string reason;          // human-readable explanation (for logs)
+  bool used() const { return outcome == PlateOutcome::kNewLandmark || outcome == PlateOutcome::kReobserved; }
+};
+
+class TextSlam {
+ public:
+  // Throws std::invalid_argument naming the field if an option is out of range.
+  explicit TextSlam(const TextSlamOptions& options);
+
+  // As RbpfSlam::AddScan. The scan is also kept for ranges of later plate readings.
+  bool AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index);
+
+  // A doorplate read at the time of `odometry_pose` (base_link in odom). Never throws on a reading that
+  // is merely unusable (returns why it was ignored); throws std::invalid_argument naming the field
+  // ("PlateSighting.bearing_rad ...") for NaN or out-of-range fields or an empty text.
+  TextSlamPlateResult AddPlate(const PlateSighting& sighting, const Pose2D& odometry_pose);
+
+  // The best particle's map (map_server-ready: -1 unknown, 0 free, 100 occupied).
+  OccupancyGrid BuildOccupancyGrid() const;
+  // The best particle's landmarks (index = landmark id order) with adjacent distances from the map
+  // (eq. 13, source "map") and from odometry (source "odometry"). Walls are labelled "wall0", "wall1",
+  // ...: plates facing the same way (within 30°) on the same line (within 0.5 m across it) share one.
+  TextMap BuildTextMap() const;
+  // base_link in the map frame, best particle, at the last processed scan.
+  Pose2D BestPose() const;
+  // The best particle's landmarks, in id order.
+  std::vector<SlamLandmark> BestLandmarks() const;
+  const RbpfSlam& slam() const { return slam_; }
+  const TextSlamOptions& options() const { return options_; }
+  int num_landmarks() const { return next_landmark_id_; }
+
+ private:
+  std::optional<double> RangeFromLastScan(double bearing_rad) const;
+
+  const TextSlamOptions options_;
+  RbpfSlam slam_;
+  std::optional<RangeScan> last_scan_;  // the last scan fed (ranges for readings without one)
+  int next_landmark_id_ = 0;
+  // eq. 13 by odometry: per landmark id, the plate's position in the odometry frame at its first reading.
+  std::vector<Vec2> first_reading_in_odom_;
+};
+
+}  // namespace doorplate_localization

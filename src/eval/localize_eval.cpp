@@ -1,0 +1,277 @@
+#include "localize_eval.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "doorplate_localization/sim/simulator.h"
+#include "eval_args.h"
+#include "localize_sensors.h"
+
+namespace doorplate_localization {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double Median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+void Validate(const LocalizeEvalOptions& o, bool has_text_map) {
+  auto check = [](bool ok, const char* field) {
+    if (!ok) throw std::invalid_argument(std::string("LocalizeEvalOptions.") + field + ": out of range");
+  };
+  check(o.trials >= 1, "trials");
+  check(o.max_travel_m > 0.0, "max_travel_m");
+  check(o.speed_mps > 0.0, "speed_mps");
+  check(o.success_distance_m > 0.0, "success_distance_m");
+  check(o.success_angle_rad > 0.0, "success_angle_rad");
+  check(o.camera_rate_hz >= 0.0, "camera_rate_hz");
+  if (o.method == LocalizeMethod::kTextAmcl && !has_text_map) {
+    throw std::invalid_argument("LocalizeEvalOptions.method: text_amcl needs a text map");
+  }
+}
+
+// One trial's simulation: the robot, its search behaviour, the filter and (text_amcl) the reader.
+class TrialRun {
+ public:
+  TrialRun(const World& world, const OccupancyGrid& grid, std::shared_ptr<const TextMap> text_map,
+           const StartPoseSampler& poses, const LocalizeEvalOptions& options, int index)
+      : options_(options), poses_(poses), seed_(PassSeed(options.seed, index)), rng_(seed_),
+        sim_(world, SimOptions(seed_)), sweep_(SweepOptions(options)) {
+    trial_.index = index;
+    trial_.seed = seed_;
+    trial_.start_pose = poses_.Sample(rng_);
+    sim_.Teleport(trial_.start_pose);
+    TextAmclSetupOptions setup = options.filter;
+    setup.filter.random_seed = seed_;
+    setup.use_text = options.method == LocalizeMethod::kTextAmcl;
+    filter_ = MakeTextAmcl(setup, grid, setup.use_text ? text_map : nullptr);
+    filter_->GlobalLocalization();
+    if (setup.use_text) {
+      TextExtractorOptions extractor = options.extractor;
+      extractor.tracker.fx_px = sim_.camera().intrinsics().fx_px;
+      extractor.tracker.cx_px = sim_.camera().intrinsics().cx_px;
+      if (options.known_rooms) extractor.validator.known_rooms = text_map->Texts();
+      extractor_ = std::make_unique<TextExtractor>(extractor);
+      double x = 0, y = 0, z = 0, pitch = 0;
+      sim_.camera().MountPose(&x, &y, &z, &camera_yaw_rad_, &pitch);
+    }
+  }
+
+  LocalizeTrial Run() {
+    const Clock::time_point start = Clock::now();
+    const SimulatorOptions sim_options = SimOptions(seed_);
+    const long long steps_per_scan =
+        std::max(1LL, std::llround(1.0 / (sim_.world().sensors.laser.rate_hz * sim_options.physics_step_s)));
+    const double frame_period_s = 1.0 / sim_.world().sensors.camera.rate_hz;
+    const double search_time_limit_s = 3.0 * options_.max_travel_m / options_.speed_mps + 120.0;
+    long long next_frame = 0;
+    bool done = false;
+    for (long long step = 0; !done; ++step) {
+      if (step % steps_per_scan == 0) done = ScanStep();
+      if (!done && extractor_ && sim_.time_s() + 1e-9 >= static_cast<double>(next_frame) * frame_period_s) {
+        ++next_frame;
+        done = CameraStep();
+      }
+      if (done) break;
+      sim_.Step();
+      const bool too_far = sim_.distance_travelled_m() - search_start_travel_m_ > options_.max_travel_m;
+      const bool too_long = sim_.time_s() - search_start_time_s_ > search_time_limit_s;
+      if (too_far || too_long) {
+        // The search failed: record where the filter believes the robot is anyway.
+        (trial_.kidnapped ? trial_.recovery : trial_.fix) = Fix();
+        done = true;
+      }
+    }
+    trial_.laser_updates = filter_->Status().laser_updates;
+    trial_.sim_seconds = sim_.time_s();
+    trial_.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return trial_;
+  }
+
+ private:
+  static SimulatorOptions SimOptions(std::uint64_t seed) {
+    SimulatorOptions o;
+    o.seed = seed;
+    return o;
+  }
+  static CorridorSweepOptions SweepOptions(const LocalizeEvalOptions& options) {
+    CorridorSweepOptions o = options.sweep;
+    o.follower.cruise_speed_mps = options.speed_mps;
+    return o;
+  }
+
+  // Control and laser update at the laser's rate. Returns true when the trial is over.
+  bool ScanStep() {
+    last_scan_ = ToLocalizationScan(sim_.Scan(), sim_.world().sensors.laser);
+    VelocityCommand cmd = Sweep();
+    sim_.SetCommand(cmd.linear_mps, cmd.angular_rps);
+    const Pose2D odom = sim_.odom_pose();
+    const bool first = !has_odom_reference_;
+    if (filter_->UpdateOdometry(odom) || first) {
+      odom_at_update_ = odom;
+      has_odom_reference_ = true;
+    }
+    filter_->UpdateLaser(last_scan_);
+    return CheckState();
+  }
+
+  // The search strategy: corridor sweeps, a new one as soon as one ends.
+  VelocityCommand Sweep() {
+    VelocityCommand cmd = sweep_.Step(last_scan_.ranges_m, last_scan_.angle_min_rad, last_scan_.angle_increment_rad,
+                                      sim_.odom_pose());
+    if (sweep_.phase() == SweepPhase::kDone) {
+      sweep_.Reset();
+      cmd = sweep_.Step(last_scan_.ranges_m, last_scan_.angle_min_rad, last_scan_.angle_increment_rad,
+                        sim_.odom_pose());
+    }
+    return cmd;
+  }
+
+  // One camera image through the reader; every report updates the filter at the current pose.
+  bool CameraStep() {
+    const std::vector<PlateReport> reports = extractor_->Process(sim_.CameraImage(), sim_.time_s());
+    bool done = false;
+    for (const PlateReport& report : reports) {
+      ++trial_.plate_reports;
+      const PlateReading reading = ToPlateReading(
+          report, camera_yaw_rad_,
+          RangeAlongBearing(last_scan_, camera_yaw_rad_ + report.bearing_rad, 1.5 * std::fabs(last_scan_.angle_increment_rad)));
+      if (!ValidatePlateReading(reading).empty()) continue;
+      // Bring the particles to the robot's current pose first (amcl's request_nomotion_update), so the
+      // reading's bearing and range are compared from where it was taken.
+      filter_->ForceUpdate();
+      if (filter_->UpdateOdometry(sim_.odom_pose())) odom_at_update_ = sim_.odom_pose();
+      filter_->UpdateLaser(last_scan_);
+      if (filter_->UpdatePlate(reading).used) ++trial_.plate_updates;
+      done = CheckState() || done;
+      if (done) break;
+    }
+    return done;
+  }
+
+  LocalizeFix Fix() const {
+    LocalizeFix fix;
+    fix.travel_m = sim_.distance_travelled_m() - search_start_travel_m_;
+    fix.sim_time_s = sim_.time_s() - search_start_time_s_;
+    fix.truth = sim_.true_pose();
+    fix.estimate = filter_->Estimate().pose.Compose(odom_at_update_.Between(sim_.odom_pose()));
+    fix.error_m = std::hypot(fix.estimate.x_m - fix.truth.x_m, fix.estimate.y_m - fix.truth.y_m);
+    const double angle = std::fabs(NormalizeAngle(fix.estimate.theta_rad - fix.truth.theta_rad));
+    fix.error_deg = angle * 180.0 / M_PI;
+    fix.within_tolerance = fix.error_m <= options_.success_distance_m && angle <= options_.success_angle_rad;
+    return fix;
+  }
+
+  // Convergence (and, after a kidnap, loss and recovery) checks. Returns true when the trial is over.
+  bool CheckState() {
+    const LocalizationState state = filter_->State();
+    if (!trial_.kidnapped) {
+      if (state != LocalizationState::kConverged) return false;
+      trial_.converged = true;
+      trial_.fix = Fix();
+      if (!options_.kidnap || !trial_.fix.within_tolerance) return true;
+      Kidnap();
+      return false;
+    }
+    if (state == LocalizationState::kLost && !trial_.lost_detected) {
+      trial_.lost_detected = true;
+      trial_.lost_detected_travel_m = sim_.distance_travelled_m() - search_start_travel_m_;
+      trial_.lost_reason = ToString(filter_->Status().lost_reason);
+    }
+    if (state != LocalizationState::kConverged) return false;
+    const LocalizeFix fix = Fix();
+    if (!fix.within_tolerance) return false;
+    trial_.recovered = true;
+    trial_.recovery = fix;
+    return true;
+  }
+
+  void Kidnap() {
+    trial_.kidnapped = true;
+    trial_.kidnap_pose = poses_.SampleAwayFrom(sim_.true_pose(), rng_);
+    sim_.Teleport(trial_.kidnap_pose);
+    sweep_.Reset();
+    if (extractor_) extractor_->Reset();
+    search_start_travel_m_ = sim_.distance_travelled_m();
+    search_start_time_s_ = sim_.time_s();
+  }
+
+  const LocalizeEvalOptions& options_;
+  const StartPoseSampler& poses_;
+  const std::uint64_t seed_;
+  std::mt19937_64 rng_;
+  Simulator sim_;
+  CorridorSweep sweep_;
+  std::unique_ptr<TextAmcl> filter_;
+  std::unique_ptr<TextExtractor> extractor_;
+  double camera_yaw_rad_ = 0.0;
+  LocalizationScan last_scan_;
+  Pose2D odom_at_update_;
+  bool has_odom_reference_ = false;
+  double search_start_travel_m_ = 0.0;
+  double search_start_time_s_ = 0.0;
+  LocalizeTrial trial_;
+};
+
+}  // namespace
+
+const char* ToString(LocalizeMethod method) { return method == LocalizeMethod::kAmcl ? "amcl" : "text_amcl"; }
+
+LocalizeSummary Summarize(const LocalizeEvalResult& result) {
+  LocalizeSummary s;
+  std::vector<double> travel, error_m, error_deg, recovery_travel;
+  for (const LocalizeTrial& t : result.trials) {
+    ++s.trials;
+    if (t.Success()) ++s.successes;
+    if (t.WrongConvergence()) ++s.wrong_convergences;
+    if (!t.converged) ++s.not_converged;
+    if (!t.converged && t.fix.within_tolerance) ++s.not_converged_estimate_right;
+    if (t.converged) {
+      travel.push_back(t.fix.travel_m);
+      error_m.push_back(t.fix.error_m);
+      error_deg.push_back(t.fix.error_deg);
+    }
+    if (t.kidnapped) ++s.kidnaps;
+    if (t.lost_detected) ++s.kidnap_lost_detected;
+    if (t.recovered) {
+      ++s.recoveries;
+      recovery_travel.push_back(t.recovery.travel_m);
+    }
+  }
+  s.success_rate = s.trials > 0 ? static_cast<double>(s.successes) / s.trials : 0.0;
+  s.recovery_rate = s.kidnaps > 0 ? static_cast<double>(s.recoveries) / s.kidnaps : 0.0;
+  s.median_travel_m = Median(travel);
+  s.median_final_error_m = Median(error_m);
+  s.median_final_error_deg = Median(error_deg);
+  s.median_recovery_travel_m = Median(recovery_travel);
+  return s;
+}
+
+LocalizeEvalResult RunLocalizeEval(const World& world, const OccupancyGrid& grid,
+                                   std::shared_ptr<const TextMap> text_map, const OccupancyGrid& ground_truth_grid,
+                                   const LocalizeEvalOptions& options) {
+  Validate(options, text_map != nullptr);
+  const Clock::time_point start = Clock::now();
+  World run_world = world;
+  if (options.camera_rate_hz > 0.0) run_world.sensors.camera.rate_hz = options.camera_rate_hz;
+  BuildSurfaces(run_world);
+  const StartPoseSampler poses(FindCorridorBand(run_world), ground_truth_grid, options.poses);
+  LocalizeEvalResult result;
+  result.world_name = world.name;
+  result.method = options.method;
+  result.kidnap = options.kidnap;
+  for (int i = 0; i < options.trials; ++i) {
+    TrialRun run(run_world, grid, text_map, poses, options, i);
+    result.trials.push_back(run.Run());
+  }
+  result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return result;
+}
+
+}  // namespace doorplate_localization

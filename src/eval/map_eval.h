@@ -1,0 +1,65 @@
+// `doorplate_eval map` (paper Table II): one corridor sweep in the simulator (out along one wall, turn,
+// back along the other; CorridorSweep), every laser scan fed to the SLAM with the odometry pose, and for
+// method rbpf_text every rendered camera frame through the real text extractor, its reports fed to
+// TextSlam::AddPlate. The result is measured on the output maps (map_measure.h). ROS-free, in-process,
+// deterministic for a seed.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "doorplate_localization/behaviour/corridor_sweep.h"
+#include "doorplate_localization/maps/occupancy_grid.h"
+#include "doorplate_localization/maps/text_map.h"
+#include "doorplate_localization/sim/world.h"
+#include "doorplate_localization/slam/text_slam.h"
+#include "doorplate_localization/text/text_extractor.h"
+#include "map_measure.h"
+
+namespace doorplate_localization {
+
+enum class MapMethod { kRbpf, kRbpfText };
+// "rbpf" / "rbpf_text"; ParseMapMethod throws std::invalid_argument for anything else.
+const char* MapMethodName(MapMethod method);
+MapMethod ParseMapMethod(const std::string& name);
+
+struct MapEvalOptions {
+  MapMethod method = MapMethod::kRbpfText;
+  std::uint64_t seed = 1;            // simulator seed; the filter's seed is derived from it
+  double speed_mps = 0.4;            // cruise speed of the sweep
+  double max_time_s = 1800.0;        // simulated seconds after which an unfinished sweep stops
+  // slam.num_particles etc.; slam.seed is overwritten from `seed`. The command starts method rbpf from
+  // RbpfSlamOptions' defaults and rbpf_text from TextSlamOptions' (DefaultTextSlamLaserOptions).
+  TextSlamOptions slam;
+  TextExtractorOptions extractor;    // fx/cx are set from the simulated camera
+  CorridorSweepOptions sweep;
+};
+
+struct MapEvalResult {
+  std::string world_name;
+  bool sweep_done = false;
+  double sim_seconds = 0.0;          // simulated duration of the sweep
+  double seconds = 0.0;              // wall clock of the whole run (simulation, rendering, OCR, SLAM)
+  double slam_seconds = 0.0;         // thread CPU time inside the SLAM calls (AddScan + AddPlate)
+  int scans = 0;                     // scans fed
+  int scans_processed = 0;
+  int degenerate_scans = 0;          // processed scans the degeneracy-aware proposal found degenerate
+  long peak_rss_kb = 0;              // of the process, at the end of the run (VmHWM)
+  CorridorExtent truth;              // from the world's walls
+  CorridorExtent estimate;           // from the SLAM grid
+  double length_accuracy = 0.0;
+  double width_accuracy = 0.0;
+  int plate_reports = 0;             // extractor reports fed to AddPlate
+  int plate_reports_used = 0;
+  PlateScore plates;
+  Pose2D world_from_map;             // the map frame in the world: the start pose, odometry at the first scan
+  double final_position_error_m = 0.0;  // best particle's pose vs the true pose at the end
+  OccupancyGrid grid;
+  TextMap text_map;                  // empty landmarks for method rbpf
+  std::vector<Pose2D> trajectory;    // best particle's history, map frame
+};
+
+// Throws std::invalid_argument for bad options, whatever the components throw for their options.
+MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options);
+
+}  // namespace doorplate_localization

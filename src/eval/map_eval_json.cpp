@@ -1,0 +1,45 @@
+#include "map_eval_json.h"
+
+namespace doorplate_localization {
+
+void WriteMapEvalJson(const MapEvalResult& r, const MapEvalRunInfo& info, JsonWriter* json) {
+  JsonWriter& j = *json;
+  j.BeginObject();
+  j.Field("experiment", "map").Field("command_line", info.command_line).Field("world", r.world_name);
+  j.Field("world_path", info.world_path).Field("method", MapMethodName(info.method)).Field("seed", info.seed);
+  j.Field("particles", info.particles);
+  j.Field("sweep_done", r.sweep_done);
+  j.Field("length_true_m", r.truth.length_m).Field("length_est_m", r.estimate.length_m);
+  j.Field("length_accuracy", r.length_accuracy);
+  j.Field("width_true_m", r.truth.width_m).Field("width_est_m", r.estimate.width_m);
+  j.Field("width_accuracy", r.width_accuracy);
+  j.Field("extent_measured", r.estimate.ok);
+  j.Field("plates_true", r.plates.plates_true).Field("plates_in_map", r.plates.plates_in_map);
+  j.Field("plates_mapped", r.plates.plates_mapped);
+  if (r.plates.plates_mapped > 0) {
+    j.Field("plate_position_rmse_m", r.plates.rmse_m).Field("plate_max_error_m", r.plates.max_error_m);
+  } else {
+    j.Key("plate_position_rmse_m").Null().Key("plate_max_error_m").Null();
+  }
+  j.Field("plate_reports", r.plate_reports).Field("plate_reports_used", r.plate_reports_used);
+  j.Field("final_position_error_m", r.final_position_error_m);
+  j.Field("seconds", r.seconds).Field("sim_seconds", r.sim_seconds).Field("slam_seconds", r.slam_seconds);
+  j.Field("scans", r.scans).Field("scans_processed", r.scans_processed);
+  j.Field("degenerate_scans", r.degenerate_scans);
+  j.Field("slam_ms_per_processed_scan", r.scans_processed > 0 ? 1000.0 * r.slam_seconds / r.scans_processed : 0.0);
+  j.Field("slam_real_time_factor", r.slam_seconds > 0 ? r.sim_seconds / r.slam_seconds : 0.0);
+  j.Field("peak_rss_mb", r.peak_rss_kb / 1024.0);
+  j.Key("plates").BeginArray();
+  for (std::size_t i = 0; i < r.text_map.landmarks.size(); ++i) {
+    const TextLandmark& l = r.text_map.landmarks[i];
+    j.BeginObject().Field("text", l.text).Field("x_m", l.pose.x_m).Field("y_m", l.pose.y_m);
+    j.Field("wall", l.wall).Field("observations", l.observations);
+    const double e = i < r.plates.errors_m.size() ? r.plates.errors_m[i] : -1.0;
+    if (e >= 0) j.Field("error_m", e); else j.Key("error_m").Null();
+    j.EndObject();
+  }
+  j.EndArray();
+  j.EndObject();
+}
+
+}  // namespace doorplate_localization

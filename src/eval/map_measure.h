@@ -1,0 +1,50 @@
+// Measurements of a SLAM result for `doorplate_eval map` (paper Table II): the corridor's length and width
+// read off an occupancy grid, and the mapped plates against the world's plates.
+#pragma once
+
+#include <vector>
+
+#include "doorplate_localization/common/geometry2d.h"
+#include "doorplate_localization/maps/occupancy_grid.h"
+#include "doorplate_localization/maps/text_map.h"
+
+namespace doorplate_localization {
+
+// Length and width of a straight corridor in its own grid, without ground truth. The corridor axis is the
+// principal axis of the occupied cells (u along it, v across). Length: between the two end walls, each
+// the median u of the occupied cells within `end_band_m` of that end (the end is the 0.5 % / 99.5 %
+// quantile of u, so a few stray cells do not move it). Width: between the two side walls, each the
+// median v of the occupied cells on that side of the corridor's centre line (cells within
+// `end_band_m` of either end left out); the centre line is the median v of all of them. Cell centres
+// are used; metres. ok = false if the grid has fewer than 20 occupied cells. Rooms behind open doors lie
+// beyond the side walls and swamp those medians: the width is then meaningless (docs/results/table2-map.md).
+struct CorridorExtent {
+  bool ok = false;
+  double length_m = 0.0;
+  double width_m = 0.0;
+  Vec2 axis;                // unit vector along the corridor, grid frame
+};
+CorridorExtent MeasureCorridor(const OccupancyGrid& grid, double end_band_m = 0.3);
+
+// The same extent of a world's wall segments (surfaces, no cells): the principal axis of their endpoints,
+// length and width = the extents along and across it.
+CorridorExtent MeasureSegments(const std::vector<Segment>& walls);
+
+// 1 − |estimate − truth| / truth (Table II's "accuracy"); 0 if truth <= 0.
+double ExtentAccuracy(double estimate_m, double truth_m);
+
+// Mapped plates against the true ones. `world_from_map` takes map-frame positions into the world frame.
+// A mapped plate matches the nearest true plate with the same text within `match_radius_m` (each true
+// plate at most once, nearest pairs first). Errors are world-frame distances.
+struct PlateScore {
+  int plates_true = 0;
+  int plates_in_map = 0;
+  int plates_mapped = 0;            // matched
+  double rmse_m = 0.0;              // over matched plates (0 if none)
+  double max_error_m = 0.0;
+  std::vector<double> errors_m;     // per mapped plate in map order; -1 if unmatched
+};
+PlateScore ScorePlates(const TextMap& mapped, const TextMap& truth, const Pose2D& world_from_map,
+                       double match_radius_m = 1.0);
+
+}  // namespace doorplate_localization

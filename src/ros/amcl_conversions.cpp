@@ -1,0 +1,106 @@
+#include "doorplate_localization/ros/amcl_conversions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <Eigen/Eigenvalues>
+
+#include "doorplate_localization/ros/text_detection_conversions.h"
+
+namespace doorplate_localization {
+
+LocalizationScan ToLocalizationScan(const sensor_msgs::LaserScan& msg, const Pose2D& laser_in_base) {
+  LocalizationScan scan;
+  scan.angle_min_rad = msg.angle_min;
+  scan.angle_increment_rad = msg.angle_increment;
+  scan.min_range_m = msg.range_min;
+  scan.max_range_m = msg.range_max;
+  scan.ranges_m = msg.ranges;
+  scan.laser_pose = laser_in_base;
+  return scan;
+}
+
+std::vector<PlateReading> ToPlateReadings(const TextDetectionArray& msg, const CameraAxis& camera,
+                                          const LocalizationScan* latest_scan, double max_range_bearing_error_rad,
+                                          std::vector<std::string>* problems) {
+  std::vector<PlateReading> readings;
+  for (const TextDetection& d : msg.detections) {
+    if (!IsPlateReport(d)) continue;
+    const double bearing_rad = camera.yaw_rad + camera.bearing_sign * d.bearing_rad;
+    const PlateReading r = PlateReadingAt(
+        d.text, d.confidence, std::isfinite(d.bearing_rad) ? bearing_rad : d.bearing_rad,  // NaN: for the check below
+        latest_scan != nullptr ? RangeAlongBearing(*latest_scan, bearing_rad, max_range_bearing_error_rad)
+                               : std::nullopt);
+    const std::string problem = ValidatePlateReading(r);
+    if (!problem.empty()) {
+      if (problems != nullptr) problems->push_back("detection '" + d.text + "': " + problem);
+      continue;
+    }
+    readings.push_back(r);
+  }
+  return readings;
+}
+
+std::string FromInitialPoseMsg(const geometry_msgs::PoseWithCovarianceStamped& msg, const std::string& global_frame,
+                               Pose2D* mean, Eigen::Matrix3d* covariance) {
+  if (!msg.header.frame_id.empty() && msg.header.frame_id != global_frame) {
+    return "header.frame_id is '" + msg.header.frame_id + "', expected '" + global_frame + "'";
+  }
+  const geometry_msgs::Pose& p = msg.pose.pose;
+  if (!IsFinitePose(p)) return "pose must be finite";
+  const double norm = QuaternionNorm(p.orientation);
+  if (std::fabs(norm - 1.0) > 0.01) {
+    std::ostringstream out;
+    out << "pose.orientation must be a unit quaternion, got norm " << norm;
+    return out.str();
+  }
+  static constexpr int kIndex[3] = {0, 1, 5};  // x, y, yaw in the 6x6 row-major covariance
+  Eigen::Matrix3d c;
+  for (int r = 0; r < 3; ++r) {
+    for (int k = 0; k < 3; ++k) c(r, k) = msg.pose.covariance[kIndex[r] * 6 + kIndex[k]];
+  }
+  if (!c.allFinite()) return "pose.covariance must be finite";
+  if ((c - c.transpose()).cwiseAbs().maxCoeff() > 1e-9 * std::max(1.0, c.cwiseAbs().maxCoeff())) {
+    return "pose.covariance of x, y, yaw must be symmetric";
+  }
+  const double min_eigenvalue = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(c).eigenvalues().minCoeff();
+  if (min_eigenvalue < -1e-9) {
+    std::ostringstream out;
+    out << "pose.covariance of x, y, yaw must be positive semi-definite, smallest eigenvalue " << min_eigenvalue;
+    return out.str();
+  }
+  *mean = ToPose2D(p);
+  *covariance = c;
+  return "";
+}
+
+geometry_msgs::PoseWithCovarianceStamped ToAmclPoseMsg(const PoseEstimate& estimate, const std::string& frame_id,
+                                                       const ros::Time& stamp) {
+  geometry_msgs::PoseWithCovarianceStamped msg;
+  msg.header.frame_id = frame_id;
+  msg.header.stamp = stamp;
+  msg.pose.pose = ToPoseMsg(estimate.pose);
+  static constexpr int kIndex[3] = {0, 1, 5};
+  for (int r = 0; r < 3; ++r) {
+    for (int k = 0; k < 3; ++k) msg.pose.covariance[kIndex[r] * 6 + kIndex[k]] = estimate.covariance(r, k);
+  }
+  return msg;
+}
+
+geometry_msgs::PoseArray ToParticleCloudMsg(const std::vector<Particle>& particles, const std::string& frame_id,
+                                            const ros::Time& stamp) {
+  geometry_msgs::PoseArray msg;
+  msg.header.frame_id = frame_id;
+  msg.header.stamp = stamp;
+  msg.poses.reserve(particles.size());
+  for (const Particle& p : particles) msg.poses.push_back(ToPoseMsg(p.pose));
+  return msg;
+}
+
+std::string StateText(LocalizationState state, LostReason reason) {
+  if (state != LocalizationState::kLost) return ToString(state);
+  return std::string(ToString(state)) + ": " + ToString(reason);
+}
+
+}  // namespace doorplate_localization

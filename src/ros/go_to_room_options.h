@@ -1,0 +1,39 @@
+// Parameters of GoToRoomNodelet, read and validated once from its private namespace (docs/parameters.md).
+#pragma once
+
+#include <string>
+
+#include <ros/node_handle.h>
+
+#include "doorplate_localization/behaviour/go_to_room.h"
+#include "doorplate_localization/behaviour/room_goal_planner.h"
+#include "doorplate_localization/maps/text_map.h"
+#include "doorplate_localization/ros/param_reader.h"
+
+namespace doorplate_localization {
+
+struct GoToRoomNodeOptions {
+  std::string text_map_file;        // ~text_map_file (required): the doorplates, docs/text-map-format.md
+  TextMap text_map;                 // loaded from it
+  // ~duplicate_rule; planner.wall_distance_m is the follower's ~wall_distance_m (the goal is where the
+  // wall following brings the robot).
+  RoomGoalPlannerOptions planner;
+  // ~approach_sector_max_deg, ~approach_tolerance_m, ~turn_speed_rps, ~align_tolerance_rad, ~arrive_tolerance_m, ~approach_gain_per_s,
+  // ~min_approach_speed_mps, ~face_gain_per_s, ~face_tolerance_rad, and the WallFollowerNodelet's follower
+  // parameters under the same names (~wall_distance_m, ~cruise_speed_mps, ...; no ~wall_side: the goal's
+  // wall is followed).
+  GoToRoomOptions controller;
+  std::string map_frame_id = "map";        // the localizer's frame: pose = tf map -> base_link
+  std::string odom_frame_id = "odom";      // the eq. 15 fallback drives in this frame
+  std::string base_frame_id = "base_link";
+  double scan_timeout_s = 0.5;             // no valid scan for this long (ROS time) while driving: stop
+  double tf_timeout_s = 0.1;               // wait this long for a tf at a scan's stamp
+  bool text_fallback = true;               // eq. 15 from text_detections while there is no map pose
+  double reading_max_age_s = 60.0;         // a plate read longer ago than this is not used for eq. 15
+};
+
+// Throws ParameterError naming the parameter, e.g. "/go_to_room/text_map_file = 'x.yaml' cannot be used:
+// x.yaml: cannot open ...", "/go_to_room/duplicate_rule must be 'nearest' or 'refuse', got first".
+GoToRoomNodeOptions LoadGoToRoomOptions(const ros::NodeHandle& private_nh);
+
+}  // namespace doorplate_localization

@@ -1,0 +1,188 @@
+#include "doorplate_localization/ros/slam_conversions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include <Eigen/Dense>
+#include <tf2/LinearMath/Vector3.h>
+
+#include "doorplate_localization/ros/scan_conversions.h"
+#include "doorplate_localization/ros/text_detection_conversions.h"
+
+namespace doorplate_localization {
+namespace {
+
+// base_link in odom from tf; "" or the problem (a non-finite transform).
+std::string OdometryPose(const geometry_msgs::Transform& odom_to_base, Pose2D* pose) {
+  try {
+    *pose = ToPose2D(odom_to_base);
+  } catch (const std::invalid_argument& e) {
+    return std::string("odom -> base_link: ") + e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string ToLaserMounting(const geometry_msgs::Transform& base_to_laser, LaserMounting* mounting) {
+  Pose2D pose;
+  try {
+    pose = ToPose2D(base_to_laser);
+  } catch (const std::invalid_argument& e) {
+    return std::string("base_link -> laser: ") + e.what();
+  }
+  const tf2::Vector3 z = ChildAxisInParent(base_to_laser.rotation, tf2::Vector3(0, 0, 1));
+  if (std::fabs(z.z()) < std::cos(8.0 * M_PI / 180.0)) {
+    std::ostringstream problem;
+    problem << "the laser's scan plane is tilted " << std::acos(std::min(1.0, std::fabs(z.z()))) * 180.0 / M_PI
+            << " deg from the floor plane (at most 8 deg)";
+    return problem.str();
+  }
+  mounting->upside_down = z.z() < 0.0;
+  mounting->pose = pose;
+  return "";
+}
+
+std::string ToRangeScan(const sensor_msgs::LaserScan& msg, const LaserMounting& mounting, double max_range_m,
+                        int min_valid_beams, RangeScan* out) {
+  std::string problem = ValidateScan(msg);
+  if (!problem.empty()) return problem;
+  // Drivers disagree on whether angle_max is the last beam's angle: allow one beam either way.
+  const double span_beams = (static_cast<double>(msg.angle_max) - msg.angle_min) / msg.angle_increment + 1.0;
+  if (std::isfinite(span_beams) && std::fabs(span_beams - static_cast<double>(msg.ranges.size())) > 1.5) {
+    std::ostringstream p;
+    p << msg.ranges.size() << " ranges, but angle_min " << msg.angle_min << " .. angle_max " << msg.angle_max
+      << " at increment " << msg.angle_increment << " make " << std::lround(span_beams) << " beams";
+    return p.str();
+  }
+  const float no_echo_from = max_range_m > 0.0 ? static_cast<float>(max_range_m) : msg.range_max;
+  RangeScan scan;
+  scan.ranges_m.resize(msg.ranges.size());
+  int valid = 0;
+  for (std::size_t i = 0; i < msg.ranges.size(); ++i) {
+    const float r = msg.ranges[i];
+    float& to = scan.ranges_m[i];
+    if (std::isnan(r) || r < msg.range_min) {  // NaN, -inf (too close), below range_min
+      to = std::numeric_limits<float>::quiet_NaN();
+    } else if (r >= no_echo_from || r > msg.range_max) {  // +inf or beyond what the device measures
+      to = std::numeric_limits<float>::infinity();
+    } else {
+      to = r;
+      ++valid;
+    }
+  }
+  if (valid < min_valid_beams) {
+    std::ostringstream p;
+    p << "only " << valid << " of " << msg.ranges.size() << " beams are finite returns (at least "
+      << min_valid_beams << " needed)";
+    return p.str();
+  }
+  const double sign = mounting.upside_down ? -1.0 : 1.0;
+  scan.angle_min_rad = sign * msg.angle_min;
+  scan.angle_increment_rad = sign * msg.angle_increment;
+  scan.min_range_m = msg.range_min;
+  scan.laser_pose = mounting.pose;
+  *out = std::move(scan);
+  return "";
+}
+
+std::optional<PlateSighting> ToPlateSighting(const TextDetection& msg, const CameraAxis& camera,
+                                             std::string* why_not) {
+  std::string problem;
+  if (!msg.crossed_center) {
+    problem = "not at the image-centre crossing";
+  } else if (msg.text.empty()) {
+    problem = "text is empty";
+  } else {
+    problem = ValidateTextDetection(msg);
+  }
+  if (!problem.empty()) {
+    if (why_not != nullptr) *why_not = problem;
+    return std::nullopt;
+  }
+  PlateSighting sighting;
+  sighting.text = msg.text;
+  sighting.confidence = msg.confidence;
+  sighting.bearing_rad = NormalizeAngle(camera.yaw_rad + camera.bearing_sign * msg.bearing_rad);
+  return sighting;
+}
+
+std::string PrepareSlamScan(const sensor_msgs::LaserScan& msg, const TransformLookup& lookup,
+                            const SlamInputFrames& frames, RangeScan* scan, Pose2D* odometry_pose) {
+  std::string problem = ValidateScan(msg);  // before any lookup: an empty frame_id is no tf question
+  if (!problem.empty()) return problem;
+  const auto base_to_laser = lookup(frames.base_frame, msg.header.frame_id, msg.header.stamp, &problem);
+  if (!base_to_laser) return problem;
+  LaserMounting mounting;
+  problem = ToLaserMounting(*base_to_laser, &mounting);
+  if (!problem.empty()) return problem;
+  const auto odom_to_base = lookup(frames.odom_frame, frames.base_frame, msg.header.stamp, &problem);
+  if (!odom_to_base) return problem;
+  Pose2D odom_pose;
+  problem = OdometryPose(*odom_to_base, &odom_pose);
+  if (!problem.empty()) return problem;
+  problem = ToRangeScan(msg, mounting, frames.max_range_m, frames.min_valid_beams, scan);
+  if (!problem.empty()) return problem;
+  *odometry_pose = odom_pose;
+  return "";
+}
+
+std::string PrepareSlamSightings(const TextDetectionArray& msg, const TransformLookup& lookup,
+                                 const SlamInputFrames& frames, std::vector<PlateSighting>* sightings,
+                                 Pose2D* odometry_pose, std::vector<std::string>* rejected) {
+  sightings->clear();
+  if (msg.header.frame_id.empty()) return "header.frame_id is empty";
+  std::string problem;
+  const auto base_to_camera = lookup(frames.base_frame, msg.header.frame_id, msg.header.stamp, &problem);
+  if (!base_to_camera) return problem;
+  CameraAxis camera;
+  problem = ToCameraAxis(*base_to_camera, &camera);
+  if (!problem.empty()) return problem;
+  const auto odom_to_base = lookup(frames.odom_frame, frames.base_frame, msg.header.stamp, &problem);
+  if (!odom_to_base) return problem;
+  problem = OdometryPose(*odom_to_base, odometry_pose);
+  if (!problem.empty()) return problem;
+  for (const TextDetection& detection : msg.detections) {
+    std::string why_not;
+    if (auto sighting = ToPlateSighting(detection, camera, &why_not)) {
+      sightings->push_back(std::move(*sighting));
+    } else if (IsPlateReport(detection) && rejected != nullptr) {
+      rejected->push_back("'" + detection.text + "': " + why_not);
+    }
+  }
+  return "";
+}
+
+double PoseEntropy(const std::vector<SlamParticle>& particles) {
+  if (particles.empty()) return 0.0;
+  double max_log = -std::numeric_limits<double>::infinity();
+  for (const SlamParticle& p : particles) max_log = std::max(max_log, p.log_weight);
+  std::vector<double> w(particles.size());
+  double total = 0.0;
+  for (std::size_t i = 0; i < particles.size(); ++i) total += w[i] = std::exp(particles[i].log_weight - max_log);
+  if (!(total > 0.0) || !std::isfinite(total)) {  // all log-weights -inf or NaN: equal weights
+    std::fill(w.begin(), w.end(), 1.0);
+    total = static_cast<double>(w.size());
+  }
+  // Heading: relative to the first particle's, so the mean does not straddle ±pi.
+  const double theta0 = particles.front().pose.theta_rad;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  std::vector<Eigen::Vector3d> v(particles.size());
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const Pose2D& p = particles[i].pose;
+    v[i] = {p.x_m, p.y_m, NormalizeAngle(p.theta_rad - theta0)};
+    mean += (w[i] / total) * v[i];
+  }
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const Eigen::Vector3d d = v[i] - mean;
+    cov += (w[i] / total) * d * d.transpose();
+  }
+  cov += 1e-12 * Eigen::Matrix3d::Identity();  // keeps a single pose finite
+  return 0.5 * std::log(std::pow(2.0 * M_PI * M_E, 3) * cov.determinant());
+}
+
+}  // namespace doorplate_localization

@@ -1,0 +1,292 @@
+// SlamMappingNodelet: RBPF SLAM with doorplate text landmarks (slam/text_slam.h) as a thin,
+// gmapping-compatible nodelet.
+// Subscribes scan (sensor_msgs/LaserScan; held back by a tf2 message filter until odom -> scan frame is
+// known at its stamp; the laser's mounting comes from tf base_frame -> scan frame) and, with ~use_text,
+// text_detections (doorplate_localization/TextDetectionArray; detections at the image-centre crossing with
+// a text; bearing composed with the camera's optical axis in base_frame from tf).
+// Publishes map (nav_msgs/OccupancyGrid, latched) and map_metadata (latched) every map_update_interval,
+// ~entropy (std_msgs/Float64, gmapping's pose entropy) per processed scan, text_landmarks
+// (visualization_msgs/MarkerArray, latched) when the landmarks change, and tf map -> odom from the best
+// particle every transform_publish_period (future-dated by one period, like gmapping's tf_delay).
+// Services: dynamic_map (nav_msgs/GetMap, the last published map) and ~save_maps (std_srvs/Trigger:
+// <map_output_dir>/<map_name>.pgm + .yaml (map_server) and .text_map.yaml, atomically); the maps are also
+// saved when the nodelet shuts down. Parameters: slam_mapping_options.h, docs/parameters.md.
+// Bad input (broken scans, missing tf, stamps going backwards, unusable detections) is dropped with a
+// throttled warning naming the topic; the nodelet keeps running.
+// Threading: callbacks run on the nodelet's single-threaded queue (tf filter included); mutex_ also
+// guards against the destructor's final save.
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include <geometry_msgs/TransformStamped.h>
+#include <message_filters/subscriber.h>
+#include <nav_msgs/GetMap.h>
+#include <nav_msgs/MapMetaData.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <nodelet/nodelet.h>
+#include <pluginlib/class_list_macros.hpp>
+#include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+#include <std_msgs/Float64.h>
+#include <std_srvs/Trigger.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/message_filter.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <tf2_ros/transform_listener.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include "doorplate_localization/TextDetectionArray.h"
+#include "doorplate_localization/maps/map_io.h"
+#include "doorplate_localization/maps/text_map.h"
+#include "doorplate_localization/ros/map_conversions.h"
+#include "doorplate_localization/ros/pose_conversions.h"
+#include "doorplate_localization/ros/slam_conversions.h"
+#include "slam_mapping_options.h"
+
+namespace doorplate_localization {
+
+class SlamMappingNodelet : public nodelet::Nodelet {
+ public:
+  ~SlamMappingNodelet() override {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!slam_ || !options_.save_on_shutdown || !started_) return;
+    std::string message;
+    SaveMaps(&message);  // the message says whether it worked; printed without ROS (it may be shutting down)
+    std::fprintf(stderr, "[slam_mapping] at shutdown: %s\n", message.c_str());
+  }
+
+ private:
+  void onInit() override {
+    ros::NodeHandle& nh = getNodeHandle();
+    ros::NodeHandle& pnh = getPrivateNodeHandle();
+    try {
+      options_ = LoadSlamMappingOptions(pnh);
+      slam_ = std::make_unique<TextSlam>(options_.slam);
+    } catch (const std::exception& e) {
+      NODELET_FATAL("%s", e.what());
+      throw;
+    }
+    for (const std::string& p : options_.ignored_parameters) {
+      NODELET_WARN("%s is a gmapping parameter without a counterpart here; ignored (docs/parameters.md)", p.c_str());
+    }
+    frames_.odom_frame = options_.odom_frame;
+    frames_.base_frame = options_.base_frame;
+    frames_.max_range_m = options_.max_range_m;
+    frames_.min_valid_beams = options_.min_valid_beams;
+    lookup_ = [this](const std::string& target, const std::string& source, const ros::Time& stamp,
+                     std::string* problem) { return Lookup(target, source, stamp, problem); };
+    tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
+    tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_);
+    map_pub_ = nh.advertise<nav_msgs::OccupancyGrid>("map", 1, /*latch=*/true);
+    metadata_pub_ = nh.advertise<nav_msgs::MapMetaData>("map_metadata", 1, /*latch=*/true);
+    markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("text_landmarks", 1, /*latch=*/true);
+    entropy_pub_ = pnh.advertise<std_msgs::Float64>("entropy", 1, /*latch=*/true);
+    map_srv_ = nh.advertiseService("dynamic_map", &SlamMappingNodelet::OnGetMap, this);
+    save_srv_ = pnh.advertiseService("save_maps", &SlamMappingNodelet::OnSaveMaps, this);
+
+    scan_topic_ = nh.resolveName("scan");
+    scan_sub_.subscribe(nh, "scan", 5);
+    scan_filter_ = std::make_unique<tf2_ros::MessageFilter<sensor_msgs::LaserScan>>(
+        scan_sub_, *tf_buffer_, options_.odom_frame, 10, nh);
+    scan_filter_->registerCallback(&SlamMappingNodelet::OnScan, this);
+    scan_filter_->registerFailureCallback(
+        [this](const sensor_msgs::LaserScan::ConstPtr& scan, tf2_ros::filter_failure_reasons::FilterFailureReason) {
+          NODELET_WARN_THROTTLE(5.0, "%s: no tf %s -> %s at the scan's stamp %.3f; dropping it", scan_topic_.c_str(),
+                                options_.odom_frame.c_str(), scan->header.frame_id.c_str(), scan->header.stamp.toSec());
+        });
+    if (options_.use_text) {
+      detections_topic_ = nh.resolveName("text_detections");
+      detections_sub_ = nh.subscribe("text_detections", 10, &SlamMappingNodelet::OnDetections, this);
+    }
+    if (options_.transform_publish_period_s > 0.0) {
+      tf_timer_ = nh.createTimer(ros::Duration(options_.transform_publish_period_s), &SlamMappingNodelet::OnTfTimer,
+                                 this);
+    }
+    NODELET_INFO("slam mapping: %d particles, linear update %.2f m, angular update %.2f rad, text %s; maps to %s/%s.*",
+                 options_.slam.slam.num_particles, options_.slam.slam.linear_update_m,
+                 options_.slam.slam.angular_update_rad, options_.use_text ? "on" : "off",
+                 options_.map_output_dir.c_str(), options_.map_name.c_str());
+  }
+
+  // A transform target <- source at `stamp`, or nullopt with *problem set (waits up to tf_timeout_s).
+  std::optional<geometry_msgs::Transform> Lookup(const std::string& target, const std::string& source,
+                                                 const ros::Time& stamp, std::string* problem) const {
+    try {
+      return tf_buffer_->lookupTransform(target, source, stamp, ros::Duration(options_.tf_timeout_s)).transform;
+    } catch (const tf2::TransformException& e) {
+      *problem = "no tf " + target + " -> " + source + " at " + std::to_string(stamp.toSec()) + ": " + e.what();
+      return std::nullopt;
+    }
+  }
+
+  // validate → convert → core → publish.
+  void OnScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (scans_received_++ % options_.throttle_scans != 0) return;
+    const ros::Time stamp = msg->header.stamp;
+    if (!last_scan_stamp_.isZero() && stamp <= last_scan_stamp_) {
+      NODELET_WARN_THROTTLE(5.0, "%s: stamp %.3f is not after the previous scan's %.3f (time went backwards?); "
+                            "dropping it", scan_topic_.c_str(), stamp.toSec(), last_scan_stamp_.toSec());
+      return;
+    }
+    RangeScan scan;
+    Pose2D odom_pose;
+    const std::string problem = PrepareSlamScan(*msg, lookup_, frames_, &scan, &odom_pose);
+    if (!problem.empty()) {
+      NODELET_WARN_THROTTLE(5.0, "%s: %s; dropping it", scan_topic_.c_str(), problem.c_str());
+      return;
+    }
+    last_scan_stamp_ = stamp;
+    bool processed = false;
+    try {
+      processed = slam_->AddScan(scan, odom_pose, scan_index_++);
+    } catch (const std::invalid_argument& e) {
+      NODELET_WARN_THROTTLE(5.0, "%s: %s; dropping it", scan_topic_.c_str(), e.what());
+      return;
+    }
+    if (!processed) return;
+    started_ = true;
+    last_processed_odom_ = odom_pose;
+    map_to_odom_ = MapToOdom(slam_->BestPose(), odom_pose);
+    std_msgs::Float64 entropy;
+    entropy.data = PoseEntropy(slam_->slam().particles());
+    entropy_pub_.publish(entropy);
+    if (last_map_update_.isZero() || (stamp - last_map_update_).toSec() >= options_.map_update_interval_s) {
+      PublishMap(stamp);
+    }
+  }
+
+  void OnDetections(const TextDetectionArray::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (msg->detections.empty()) return;
+    const ros::Time stamp = msg->header.stamp;
+    std::vector<PlateSighting> sightings;
+    std::vector<std::string> rejected;
+    Pose2D odom_pose;
+    const std::string problem = PrepareSlamSightings(*msg, lookup_, frames_, &sightings, &odom_pose, &rejected);
+    if (!problem.empty()) {
+      NODELET_WARN_THROTTLE(5.0, "%s: %s; dropping %zu detections", detections_topic_.c_str(), problem.c_str(),
+                            msg->detections.size());
+      return;
+    }
+    for (const std::string& r : rejected) {
+      NODELET_WARN_THROTTLE(5.0, "%s: detection %s; dropping it", detections_topic_.c_str(), r.c_str());
+    }
+    bool changed = false;
+    for (const PlateSighting& sighting : sightings) {
+      try {
+        const TextSlamPlateResult result = slam_->AddPlate(sighting, odom_pose);
+        if (result.used()) {
+          changed = true;
+          NODELET_INFO("slam mapping: plate '%s' %s (landmark %d, range %.2f m)", sighting.text.c_str(),
+                       result.outcome == PlateOutcome::kNewLandmark ? "mapped" : "re-observed",
+                       result.landmark_index, result.range_m);
+        } else {
+          NODELET_INFO("slam mapping: plate '%s' not used: %s", sighting.text.c_str(), result.reason.c_str());
+        }
+      } catch (const std::invalid_argument& e) {
+        NODELET_WARN_THROTTLE(5.0, "%s: detection '%s': %s; dropping it", detections_topic_.c_str(),
+                              sighting.text.c_str(), e.what());
+      }
+    }
+    if (changed && started_) {
+      map_to_odom_ = MapToOdom(slam_->BestPose(), last_processed_odom_);  // the best particle may have changed
+      markers_pub_.publish(ToTextLandmarkMarkers(MapFrameTextMap(), options_.map_frame, stamp));
+    }
+  }
+
+  void OnTfTimer(const ros::TimerEvent&) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!started_) return;
+    geometry_msgs::TransformStamped t;
+    t.header.frame_id = options_.map_frame;
+    t.child_frame_id = options_.odom_frame;
+    t.header.stamp = ros::Time::now() + ros::Duration(options_.transform_publish_period_s);
+    if (t.header.stamp <= last_tf_stamp_) return;  // sim time did not advance: tf2 would drop a repeat
+    last_tf_stamp_ = t.header.stamp;
+    t.transform = ToTransformMsg(map_to_odom_);
+    tf_broadcaster_.sendTransform(t);
+  }
+
+  TextMap MapFrameTextMap() const {
+    TextMap map = slam_->BuildTextMap();
+    map.frame_id = options_.map_frame;
+    return map;
+  }
+
+  void PublishMap(const ros::Time& stamp) {
+    last_map_update_ = stamp;
+    latest_map_ = ToOccupancyGridMsg(slam_->BuildOccupancyGrid(), options_.map_frame, stamp);
+    map_pub_.publish(*latest_map_);
+    metadata_pub_.publish(latest_map_->info);
+    markers_pub_.publish(ToTextLandmarkMarkers(MapFrameTextMap(), options_.map_frame, stamp));
+  }
+
+  bool OnGetMap(nav_msgs::GetMap::Request&, nav_msgs::GetMap::Response& res) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!latest_map_) return false;  // as gmapping: no map yet
+    res.map = *latest_map_;
+    return true;
+  }
+
+  bool OnSaveMaps(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    res.success = SaveMaps(&res.message);
+    if (res.success) NODELET_INFO("slam mapping: %s", res.message.c_str());
+    else NODELET_ERROR("slam mapping: ~save_maps: %s", res.message.c_str());
+    return true;
+  }
+
+  // Writes the occupancy map and the text map atomically; never replaces saved maps with an empty one.
+  bool SaveMaps(std::string* message) {
+    if (!started_) {
+      *message = "no scan processed yet: nothing to save (files in " + options_.map_output_dir + " left alone)";
+      return false;
+    }
+    const std::string base = options_.map_output_dir + "/" + options_.map_name;
+    try {
+      std::filesystem::create_directories(options_.map_output_dir);
+      SaveOccupancyMap(slam_->BuildOccupancyGrid(), base);
+      TextMap text_map = MapFrameTextMap();
+      text_map.occupancy_map = options_.map_name + ".yaml";
+      SaveTextMap(text_map, base + ".text_map.yaml");
+      *message = "saved " + base + ".pgm, " + base + ".yaml and " + base + ".text_map.yaml (" +
+                 std::to_string(text_map.landmarks.size()) + " plates)";
+      return true;
+    } catch (const std::exception& e) {
+      *message = std::string("cannot save the maps: ") + e.what();
+      return false;
+    }
+  }
+
+  SlamMappingNodeOptions options_;
+  SlamInputFrames frames_;
+  TransformLookup lookup_;
+  std::unique_ptr<TextSlam> slam_;
+  std::mutex mutex_;  // guards everything below
+  std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
+  std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
+  tf2_ros::TransformBroadcaster tf_broadcaster_;
+  message_filters::Subscriber<sensor_msgs::LaserScan> scan_sub_;
+  std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::LaserScan>> scan_filter_;
+  ros::Subscriber detections_sub_;
+  ros::Publisher map_pub_, metadata_pub_, markers_pub_, entropy_pub_;
+  ros::ServiceServer map_srv_, save_srv_;
+  ros::Timer tf_timer_;
+  std::string scan_topic_, detections_topic_;
+  long scans_received_ = 0;
+  int scan_index_ = 0;
+  ros::Time last_scan_stamp_, last_map_update_, last_tf_stamp_;
+  bool started_ = false;            // a scan was processed: the map frame exists
+  Pose2D last_processed_odom_;      // base_link in odom at the last processed scan
+  Pose2D map_to_odom_;
+  std::optional<nav_msgs::OccupancyGrid> latest_map_;
+};
+
+}  // namespace doorplate_localization
+
+PLUGINLIB_EXPORT_CLASS(doorplate_localization::SlamMappingNodelet, nodelet::Nodelet)

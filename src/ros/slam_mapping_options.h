@@ -1,0 +1,48 @@
+// Parameters of SlamMappingNodelet, read and validated once from its private namespace.
+// Two kinds of names (docs/parameters.md, section SlamMappingNodelet):
+//  - gmapping's names and defaults where they mean the same thing in our filter: particles, linearUpdate,
+//    angularUpdate, resampleThreshold, maxUrange, maxRange, delta, srr, srt, str, stt,
+//    map_update_interval, transform_publish_period, throttle_scans, base_frame, odom_frame, map_frame;
+//  - every option of the SLAM core by its name in the one option table (slam/rbpf_slam_options.h:
+//    TextSlamOptionNames(), the names doorplate_map_log / doorplate_map_bag take with --set), with `/`
+//    for `.`: ~num_particles, ~matcher/field_sigma_m, ~text/plate_sigma_m, ...
+// A gmapping name and its core name are the same option: setting both is an error. gmapping parameters
+// that have no counterpart here (sigma, lstep, ogain, xmin, ...) are reported in `ignored_parameters`.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <ros/node_handle.h>
+
+#include "doorplate_localization/ros/param_reader.h"
+#include "doorplate_localization/slam/text_slam.h"
+
+namespace doorplate_localization {
+
+struct SlamMappingNodeOptions {
+  TextSlamOptions slam;                     // the core's options (gmapping names mapped onto them)
+  std::string base_frame = "base_link";     // ~base_frame
+  std::string odom_frame = "odom";          // ~odom_frame
+  std::string map_frame = "map";            // ~map_frame
+  double map_update_interval_s = 5.0;       // ~map_update_interval: republish map this often (ROS time)
+  double transform_publish_period_s = 0.05; // ~transform_publish_period: map -> odom period; 0 = never
+  double max_range_m = 0.0;                 // ~maxRange: readings >= this are no-echo; 0 = scan's range_max
+  int throttle_scans = 1;                   // ~throttle_scans: use every n-th scan
+  int min_valid_beams = 10;                 // ~min_valid_beams: scans with fewer finite returns are dropped
+  double tf_timeout_s = 0.2;                // ~tf_timeout_s: wait this long for a tf (scans, detections)
+  bool use_text = true;                     // ~use_text: subscribe text_detections and map plates
+  std::string map_output_dir;               // ~map_output_dir: "" = $ROS_HOME/doorplate_maps (~/.ros/...)
+  std::string map_name = "map";             // ~map_name: <dir>/<name>.pgm, .yaml, .text_map.yaml
+  bool save_on_shutdown = true;             // ~save_on_shutdown
+  std::vector<std::string> ignored_parameters;  // gmapping parameters set but not used (warned at start)
+};
+
+// Throws ParameterError naming the resolved parameter ("/slam_mapping/particles must be an integer >= 1,
+// got 0", "/slam_mapping/matcher/field_sigma_m: TiledGrid...: must be > 0").
+SlamMappingNodeOptions LoadSlamMappingOptions(const ros::NodeHandle& private_nh);
+
+// The ROS parameter name of a core option name: "matcher.field_sigma_m" -> "matcher/field_sigma_m".
+std::string SlamOptionParamName(const std::string& option_name);
+
+}  // namespace doorplate_localization

@@ -1,0 +1,221 @@
+// doorplate_map_bag: maps a rosbag offline with the same TextSlam, option table and message conversions
+// as SlamMappingNodelet (slam_conversions.h). Reads the scans, tf (/tf and /tf_static: odom -> base_link,
+// base_link -> laser and -> camera) and, unless --no-text, the text detections, and writes
+//   DIR/map.pgm, DIR/map.yaml       the best particle's occupancy grid (map_server format)
+//   DIR/map.text_map.yaml           the text-landmark map (docs/text-map-format.md)
+//   DIR/trajectory.txt              `scan_index x y theta` per processed scan (posterior mean trajectory,
+//                                   RbpfSlam::MeanTrajectory, as doorplate_map_log writes it)
+// all atomically, and a progress line on stderr every few seconds. The bag is read twice: all tf first
+// (so a transform recorded after a scan still serves it), then the scans and detections in time order.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+#include <sensor_msgs/LaserScan.h>
+#include <tf2/buffer_core.h>
+#include <tf2/exceptions.h>
+#include <tf2_msgs/TFMessage.h>
+
+#include "cli_args.h"
+#include "map_tool_output.h"
+#include "doorplate_localization/TextDetectionArray.h"
+#include "doorplate_localization/maps/map_io.h"
+#include "doorplate_localization/maps/text_map.h"
+#include "doorplate_localization/ros/slam_conversions.h"
+#include "doorplate_localization/slam/rbpf_slam_options.h"
+#include "doorplate_localization/slam/text_slam.h"
+
+namespace dl = doorplate_localization;
+namespace tools = dl::tools;
+using tools::UsageError;
+
+namespace {
+
+const char kUsage[] =
+    "usage: doorplate_map_bag BAG --out-dir DIR [--seed S] [--set NAME=VALUE]...\n"
+    "         [--scan-topic /scan] [--detections-topic /text_detections] [--no-text]\n"
+    "         [--odom-frame odom] [--base-frame base_link] [--map-frame map] [--map-name map]\n"
+    "         [--max-range-m R] [--min-valid-beams N] [--progress-s SECONDS]\n"
+    "  --set changes any SLAM option by its name in the one option table (TextSlamOptionNames(): e.g.\n"
+    "  num_particles, linear_update_m, matcher.field_sigma_m, text.plate_sigma_m); the mapping nodelet\n"
+    "  takes the same names as parameters (with / for .). --max-range-m: readings at or beyond it are\n"
+    "  no-echo (the nodelet's ~maxRange; 0 = the scan's range_max).\n";
+
+struct Args {
+  std::string bag, out_dir, scan_topic = "/scan", detections_topic = "/text_detections", map_frame = "map";
+  std::string map_name = "map";
+  bool use_text = true;
+  double progress_s = 5.0;
+  dl::SlamInputFrames frames;
+  dl::TextSlamOptions options;
+};
+
+std::string Topic(const std::string& name) { return name.empty() || name[0] == '/' ? name : "/" + name; }
+
+Args ParseArgs(int argc, char** argv) {
+  Args args;
+  for (int i = 1; i < argc; ++i) {
+    const std::string option = argv[i];
+    tools::ExitIfHelp(option, kUsage);
+    if (option == "--no-text") {
+      args.use_text = false;
+      continue;
+    }
+    if (option.rfind("--", 0) != 0) {
+      if (!args.bag.empty()) throw UsageError("more than one bag: '" + args.bag + "' and '" + option + "'");
+      args.bag = option;
+      continue;
+    }
+    const std::string value = tools::TakeValue(argc, argv, &i);
+    if (option == "--out-dir") args.out_dir = value;
+    else if (option == "--scan-topic") args.scan_topic = Topic(value);
+    else if (option == "--detections-topic") args.detections_topic = Topic(value);
+    else if (option == "--odom-frame") args.frames.odom_frame = value;
+    else if (option == "--base-frame") args.frames.base_frame = value;
+    else if (option == "--map-frame") args.map_frame = value;
+    else if (option == "--map-name") args.map_name = value;
+    else if (option == "--progress-s") args.progress_s = tools::ParseNumber(option, value);
+    else if (option == "--max-range-m") args.frames.max_range_m = tools::ParseNumber(option, value);
+    else if (option == "--seed")
+      args.options.slam.seed = static_cast<std::uint64_t>(tools::ParseWholeNumber(option, value, 0));
+    else if (option == "--min-valid-beams")
+      args.frames.min_valid_beams = static_cast<int>(tools::ParseWholeNumber(option, value, 0));
+    else if (option == "--set") {
+      tools::ApplySetOption(value,
+                            [&](const std::string& name, double v) { dl::SetTextSlamOption(name, v, &args.options); });
+    } else {
+      throw UsageError("unknown option '" + option + "'");
+    }
+  }
+  if (args.bag.empty() || args.out_dir.empty()) throw UsageError("a BAG and --out-dir are required");
+  if (args.map_name.empty() || args.map_name.find('/') != std::string::npos) {
+    throw UsageError("--map-name must be a file name without '/'");
+  }
+  if (args.frames.max_range_m < 0) throw UsageError("--max-range-m must be >= 0");
+  return args;
+}
+
+// Every /tf and /tf_static transform of the bag, kept for the whole bag's span.
+std::unique_ptr<tf2::BufferCore> LoadTf(rosbag::Bag& bag) {
+  rosbag::View all(bag);
+  const double span_s = (all.getEndTime() - all.getBeginTime()).toSec();
+  auto buffer = std::make_unique<tf2::BufferCore>(ros::Duration(span_s + 60.0));
+  rosbag::View tf_view(bag, rosbag::TopicQuery(std::vector<std::string>{"/tf", "/tf_static"}));
+  for (const rosbag::MessageInstance& m : tf_view) {
+    const auto msg = m.instantiate<tf2_msgs::TFMessage>();
+    if (!msg) continue;
+    const bool is_static = m.getTopic() == "/tf_static";
+    for (const geometry_msgs::TransformStamped& t : msg->transforms) {
+      buffer->setTransform(t, "bag", is_static);  // a malformed transform is logged by tf2 and skipped
+    }
+  }
+  return buffer;
+}
+
+struct Counters {
+  long scans = 0, scans_dropped = 0, arrays = 0, arrays_dropped = 0, plates_used = 0, plates_ignored = 0;
+};
+
+void Warn(long* count, const std::string& topic, const std::string& problem) {
+  if (++*count <= 5) std::fprintf(stderr, "doorplate_map_bag: %s: %s; dropping it\n", topic.c_str(), problem.c_str());
+}
+
+int Run(const Args& args) {
+  const tools::Stopwatch clock;
+  std::filesystem::create_directories(args.out_dir);  // fails early, before a long run, if it cannot
+  rosbag::Bag bag(args.bag, rosbag::bagmode::Read);   // throws rosbag::BagException naming the problem
+  const std::unique_ptr<tf2::BufferCore> tf = LoadTf(bag);
+  const dl::TransformLookup lookup = [&tf](const std::string& target, const std::string& source,
+                                           const ros::Time& stamp, std::string* problem)
+      -> std::optional<geometry_msgs::Transform> {
+    try {
+      return tf->lookupTransform(target, source, stamp).transform;
+    } catch (const tf2::TransformException& e) {
+      *problem = "no tf " + target + " -> " + source + " at " + std::to_string(stamp.toSec()) + ": " + e.what();
+      return std::nullopt;
+    }
+  };
+
+  std::vector<std::string> topics{args.scan_topic};
+  if (args.use_text) topics.push_back(args.detections_topic);
+  rosbag::View view(bag, rosbag::TopicQuery(topics));
+  const std::size_t total = view.size();
+  dl::TextSlam slam(args.options);
+  Counters n;
+  ros::Time last_scan_stamp;
+  int scan_index = 0;
+  std::size_t done = 0;
+  double next_progress = args.progress_s;
+  for (const rosbag::MessageInstance& m : view) {
+    ++done;
+    if (const auto scan_msg = m.instantiate<sensor_msgs::LaserScan>()) {
+      ++n.scans;
+      if (!last_scan_stamp.isZero() && scan_msg->header.stamp <= last_scan_stamp) {
+        Warn(&n.scans_dropped, args.scan_topic, "stamp not after the previous scan's (time went backwards?)");
+        continue;
+      }
+      dl::RangeScan scan;
+      dl::Pose2D odom_pose;
+      const std::string problem = dl::PrepareSlamScan(*scan_msg, lookup, args.frames, &scan, &odom_pose);
+      if (!problem.empty()) {
+        Warn(&n.scans_dropped, args.scan_topic, problem);
+        continue;
+      }
+      last_scan_stamp = scan_msg->header.stamp;
+      slam.AddScan(scan, odom_pose, scan_index++);
+    } else if (const auto array = m.instantiate<dl::TextDetectionArray>()) {
+      ++n.arrays;
+      std::vector<dl::PlateSighting> sightings;
+      std::vector<std::string> rejected;
+      dl::Pose2D odom_pose;
+      const std::string problem = dl::PrepareSlamSightings(*array, lookup, args.frames, &sightings, &odom_pose, &rejected);
+      if (!problem.empty()) {
+        Warn(&n.arrays_dropped, args.detections_topic, problem);
+        continue;
+      }
+      for (const std::string& r : rejected) std::fprintf(stderr, "doorplate_map_bag: detection %s\n", r.c_str());
+      for (const dl::PlateSighting& s : sightings) {
+        const dl::TextSlamPlateResult result = slam.AddPlate(s, odom_pose);
+        ++(result.used() ? n.plates_used : n.plates_ignored);
+        if (!result.used()) std::fprintf(stderr, "doorplate_map_bag: plate '%s' not used: %s\n", s.text.c_str(),
+                                         result.reason.c_str());
+      }
+    }
+    if (clock.Seconds() >= next_progress) {
+      next_progress += args.progress_s;
+      const dl::RbpfSlamStats& s = slam.slam().stats();
+      std::fprintf(stderr, "doorplate_map_bag: message %zu/%zu, scans %d processed of %ld, plates %ld, %d landmarks, "
+                   "neff %.1f, %.1f s, peak RSS %.0f MB\n", done, total, s.scans_processed, n.scans, n.plates_used,
+                   slam.num_landmarks(), s.last_neff, clock.Seconds(), tools::PeakRssMb());
+    }
+  }
+  if (slam.slam().stats().scans_processed == 0) {
+    throw std::runtime_error(args.bag + ": no usable scan on " + args.scan_topic + " (" + std::to_string(n.scans) +
+                             " messages, " + std::to_string(n.scans_dropped) + " dropped); nothing written");
+  }
+  const std::string base = args.out_dir + "/" + args.map_name;
+  dl::TextMap text_map = slam.BuildTextMap();
+  text_map.frame_id = args.map_frame;
+  tools::SaveMapPair(slam.BuildOccupancyGrid(), text_map, base);
+  tools::WriteTrajectory(slam.slam().MeanTrajectory(), args.out_dir + "/trajectory.txt");
+  const dl::RbpfSlamStats& s = slam.slam().stats();
+  std::fprintf(stderr,
+               "doorplate_map_bag: done: %ld scans (%ld dropped), %d processed, %ld detection arrays (%ld dropped), "
+               "plates %ld used / %ld ignored, %zu landmarks, %.1f s, peak RSS %.0f MB; wrote %s.{pgm,yaml,text_map.yaml}, "
+               "%s/trajectory.txt\n",
+               n.scans, n.scans_dropped, s.scans_processed, n.arrays, n.arrays_dropped, n.plates_used, n.plates_ignored,
+               text_map.landmarks.size(), clock.Seconds(), tools::PeakRssMb(), base.c_str(), args.out_dir.c_str());
+  return 0;
+}
+
+}  // namespace
+
+// rosbag::BagException, bad options, write errors: all name the file (exit status 1).
+int main(int argc, char** argv) { return tools::RunTool("doorplate_map_bag", kUsage, ParseArgs, Run, argc, argv); }

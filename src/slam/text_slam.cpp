@@ -1,0 +1,183 @@
+#include "doorplate_localization/slam/text_slam.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace doorplate_localization {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+const TextSlamOptions& Validated(const TextSlamOptions& o) {
+  const auto fail = [](const std::string& what) { throw std::invalid_argument("TextSlamOptions." + what); };
+  if (!(o.min_confidence >= 0 && o.min_confidence <= 1)) fail("min_confidence: must be in [0, 1]");
+  if (!(o.min_plate_range_m >= 0) || !(o.max_plate_range_m > o.min_plate_range_m)) {
+    fail("min_plate_range_m/max_plate_range_m: need 0 <= min < max");
+  }
+  if (!(o.range_beam_window_rad >= 0)) fail("range_beam_window_rad: must be >= 0");
+  if (!(o.plate_sigma_m > 0)) fail("plate_sigma_m: must be > 0");
+  if (!(o.association_radius_m > 0)) fail("association_radius_m: must be > 0");
+  if (!(o.text_likelihood_gain >= 0)) fail("text_likelihood_gain: must be >= 0");
+  if (!(o.max_odometry_gap_m > 0)) fail("max_odometry_gap_m: must be > 0");
+  return o;
+}
+
+void ValidateSighting(const PlateSighting& s) {
+  const auto fail = [](const std::string& what) { throw std::invalid_argument("PlateSighting." + what); };
+  if (s.text.empty()) fail("text: must not be empty");
+  if (!(s.confidence >= 0 && s.confidence <= 1)) fail("confidence: must be in [0, 1], got " + std::to_string(s.confidence));
+  if (!(std::abs(s.bearing_rad) <= kPi + 1e-9)) fail("bearing_rad: must be in [-pi, pi], got " + std::to_string(s.bearing_rad));
+  if (s.range_m && !(std::isfinite(*s.range_m) && *s.range_m >= 0)) {
+    fail("range_m: must be finite and >= 0 when set, got " + std::to_string(*s.range_m));
+  }
+}
+
+void ValidatePose(const Pose2D& p) {
+  if (!std::isfinite(p.x_m) || !std::isfinite(p.y_m) || !std::isfinite(p.theta_rad)) {
+    throw std::invalid_argument("TextSlam::AddPlate: odometry_pose must be finite");
+  }
+}
+
+}  // namespace
+
+RbpfSlamOptions DefaultTextSlamLaserOptions() {
+  RbpfSlamOptions options;
+  options.degenerate_min_points = 10.0;
+  return options;
+}
+
+TextSlam::TextSlam(const TextSlamOptions& options) : options_(Validated(options)), slam_(options.slam) {}
+
+bool TextSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index) {
+  const bool processed = slam_.AddScan(scan, odometry_pose, scan_index);
+  last_scan_ = scan;
+  return processed;
+}
+
+std::optional<double> TextSlam::RangeFromLastScan(double bearing_rad) const {
+  if (!last_scan_) return std::nullopt;
+  const RangeScan& scan = *last_scan_;
+  // The plate's bearing is from base_link; beams are from the laser. For a laser near base_link (the
+  // usual mount) the difference is the mounting offset, corrected below by intersecting the beam.
+  std::vector<double> ranges;
+  const double half = std::max(options_.range_beam_window_rad, std::abs(scan.angle_increment_rad) * 0.51);
+  for (int i = 0; i < static_cast<int>(scan.ranges_m.size()); ++i) {
+    const double r = scan.ranges_m[i];
+    if (!std::isfinite(r) || r < scan.min_range_m) continue;
+    const double a = scan.BeamAngle(i);
+    const Vec2 end = scan.laser_pose.TransformPoint({r * std::cos(a), r * std::sin(a)});
+    if (std::abs(NormalizeAngle(std::atan2(end.y, end.x) - bearing_rad)) <= half) ranges.push_back(Norm(end));
+  }
+  if (ranges.empty()) return std::nullopt;
+  std::nth_element(ranges.begin(), ranges.begin() + ranges.size() / 2, ranges.end());
+  return ranges[ranges.size() / 2];
+}
+
+TextSlamPlateResult TextSlam::AddPlate(const PlateSighting& sighting, const Pose2D& odometry_pose) {
+  ValidateSighting(sighting);
+  ValidatePose(odometry_pose);
+  TextSlamPlateResult result;
+  if (!slam_.started()) {
+    result.outcome = PlateOutcome::kNoScanYet;
+    result.reason = "no scan processed yet";
+    return result;
+  }
+  if (sighting.confidence < options_.min_confidence) {
+    result.outcome = PlateOutcome::kLowConfidence;
+    result.reason = "confidence " + std::to_string(sighting.confidence) + " < min_confidence";
+    return result;
+  }
+  const Pose2D since_scan = slam_.LastProcessedOdometry().Between(odometry_pose);
+  if (std::hypot(since_scan.x_m, since_scan.y_m) > options_.max_odometry_gap_m) {
+    result.outcome = PlateOutcome::kTooFarFromLastScan;
+    result.reason = "odometry moved too far since the last processed scan";
+    return result;
+  }
+  const std::optional<double> range = sighting.range_m ? sighting.range_m : RangeFromLastScan(sighting.bearing_rad);
+  if (!range) {
+    result.outcome = PlateOutcome::kNoRange;
+    result.reason = "no range given and no usable beam along the bearing";
+    return result;
+  }
+  result.range_m = *range;
+  if (*range < options_.min_plate_range_m || *range > options_.max_plate_range_m) {
+    result.outcome = PlateOutcome::kRangeOutOfBounds;
+    result.reason = "range " + std::to_string(*range) + " m outside [min_plate_range_m, max_plate_range_m]";
+    return result;
+  }
+  // The plate in base_link at the reading, and the wall normal it faces (towards the robot's side).
+  const int side = sighting.bearing_rad >= 0 ? 1 : -1;
+  const Vec2 local{*range * std::cos(sighting.bearing_rad), *range * std::sin(sighting.bearing_rad)};
+  const double local_yaw = side > 0 ? -kPi / 2 : kPi / 2;
+  const auto measure = [&](const SlamParticle& p, double* yaw) {
+    const Pose2D at_reading = p.pose.Compose(since_scan);
+    *yaw = NormalizeAngle(at_reading.theta_rad + local_yaw);
+    return at_reading.TransformPoint(local);
+  };
+  const auto associate = [&](const SlamLandmarks* list, Vec2 z, double yaw) {
+    int found = -1;
+    double best = options_.association_radius_m;
+    if (!list) return found;
+    for (int i = 0; i < static_cast<int>(list->size()); ++i) {
+      const SlamLandmark& l = (*list)[i];
+      if (l.text != sighting.text || std::cos(l.yaw_rad - yaw) < 0.5) continue;
+      const double d = Norm(l.position - z);
+      if (d < best) best = d, found = i;
+    }
+    return found;
+  };
+  // Association on the best particle decides which landmark id this reading is, for every particle.
+  const SlamParticle& best = slam_.BestParticle();
+  double best_yaw = 0.0;
+  const Vec2 best_z = measure(best, &best_yaw);
+  const int best_slot = associate(best.landmarks.get(), best_z, best_yaw);
+  const int id = best_slot >= 0 ? (*best.landmarks)[best_slot].id : next_landmark_id_;
+  const bool is_new = best_slot < 0;
+  if (is_new) {
+    ++next_landmark_id_;
+    first_reading_in_odom_.push_back(odometry_pose.TransformPoint(local));
+  }
+  const double sigma2 = options_.plate_sigma_m * options_.plate_sigma_m;
+  const double cap2 = options_.association_radius_m * options_.association_radius_m;
+  slam_.UpdateLandmarksAndReweight([&](const SlamParticle& p, SlamLandmarksHandle* handle) {
+    double yaw = 0.0;
+    const Vec2 z = measure(p, &yaw);
+    auto next = std::make_shared<SlamLandmarks>(*handle ? **handle : SlamLandmarks{});
+    auto it = std::find_if(next->begin(), next->end(), [&](const SlamLandmark& l) { return l.id == id; });
+    double log_likelihood = 0.0;
+    if (it == next->end()) {
+      next->push_back({id, sighting.text, z, yaw, side, 1});
+    } else {
+      const double n = it->observations;
+      const double d2 = std::min(std::pow(Norm(it->position - z), 2), cap2);
+      log_likelihood = -options_.text_likelihood_gain * d2 / (2.0 * sigma2 * (1.0 + 1.0 / n));
+      it->position = (1.0 / (n + 1)) * (n * it->position + z);
+      it->observations += 1;
+    }
+    *handle = std::move(next);
+    return log_likelihood;
+  });
+  result.outcome = is_new ? PlateOutcome::kNewLandmark : PlateOutcome::kReobserved;
+  result.landmark_index = id;
+  result.reason = is_new ? "new landmark" : "re-observed landmark";
+  return result;
+}
+
+Pose2D TextSlam::BestPose() const { return slam_.BestParticle().pose; }
+
+std::vector<SlamLandmark> TextSlam::BestLandmarks() const {
+  if (!slam_.started()) return {};
+  const SlamLandmarksHandle& h = slam_.BestParticle().landmarks;
+  std::vector<SlamLandmark> list = h ? *h : SlamLandmarks{};
+  std::sort(list.begin(), list.end(), [](const SlamLandmark& a, const SlamLandmark& b) { return a.id < b.id; });
+  return list;
+}
+
+OccupancyGrid TextSlam::BuildOccupancyGrid() const {
+  if (!slam_.started()) throw std::logic_error("TextSlam::BuildOccupancyGrid: no scan was added yet");
+  return slam_.BestParticle().map.ToOccupancyGrid();
+}
+
+}  // namespace doorplate_localization

@@ -1,0 +1,117 @@
+#include "doorplate_localization/behaviour/room_goal_planner.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace doorplate_localization {
+namespace {
+
+TextLandmark Plate(const std::string& text, double x_m, double y_m, double yaw_rad, const std::string& wall) {
+  TextLandmark plate;
+  plate.text = text;
+  plate.pose = {x_m, y_m, yaw_rad};
+  plate.wall = wall;
+  return plate;
+}
+
+// A 2 m wide corridor along x: "101" on the north wall (facing -y), "102" on the south wall (facing +y), and
+// "220" once on each wall.
+TextMap SmallMap() {
+  TextMap map;
+  map.landmarks = {Plate("101", 3.0, 2.0, -M_PI / 2, "north"), Plate("102", 5.0, 0.0, M_PI / 2, "south"),
+                   Plate("220", 9.0, 0.0, M_PI / 2, "south"), Plate("220", 12.0, 2.0, -M_PI / 2, "north")};
+  return map;
+}
+
+bool Contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(RoomGoalPlanner, TheGoalIsInFrontOfThePlateAtTheWallDistanceFacingTheDoor) {
+  RoomGoalPlannerOptions options;
+  options.wall_distance_m = 0.5;
+  const RoomGoalPlanner planner(options, SmallMap(), "small.text_map.yaml");
+  const RoomGoalResult north = planner.Plan("101", std::nullopt);
+  ASSERT_TRUE(north.goal) << north.refusal;
+  EXPECT_EQ(north.goal->room, "101");
+  EXPECT_EQ(north.goal->landmark, 0);
+  EXPECT_NEAR(north.goal->pose.x_m, 3.0, 1e-9);
+  EXPECT_NEAR(north.goal->pose.y_m, 1.5, 1e-9);
+  EXPECT_NEAR(north.goal->pose.theta_rad, M_PI / 2, 1e-9);  // looking at the north wall
+  EXPECT_TRUE(north.goal->note.empty());
+  const RoomGoalResult south = planner.Plan(" 102\n", Pose2D{});  // surrounding whitespace is ignored
+  ASSERT_TRUE(south.goal) << south.refusal;
+  EXPECT_NEAR(south.goal->pose.x_m, 5.0, 1e-9);
+  EXPECT_NEAR(south.goal->pose.y_m, 0.5, 1e-9);
+  EXPECT_NEAR(south.goal->pose.theta_rad, -M_PI / 2, 1e-9);
+}
+
+TEST(RoomGoalPlanner, RefusesAnUnknownRoomNamingTheTextMapAndTheKnownRooms) {
+  const RoomGoalPlanner planner(RoomGoalPlannerOptions{}, SmallMap(), "maps/small.text_map.yaml");
+  const RoomGoalResult result = planner.Plan("999", Pose2D{});
+  EXPECT_FALSE(result.goal);
+  EXPECT_EQ(result.refusal,
+            "room 999 is not in the text map maps/small.text_map.yaml; known rooms: 101, 102, 220");
+  const RoomGoalResult empty = planner.Plan("  ", Pose2D{});
+  EXPECT_FALSE(empty.goal);
+  EXPECT_TRUE(Contains(empty.refusal, "empty room number")) << empty.refusal;
+}
+
+TEST(RoomGoalPlanner, ARepeatedRoomGoesToTheNearestPlateAndSaysWhichPlatesThereWere) {
+  const RoomGoalPlanner planner(RoomGoalPlannerOptions{}, SmallMap(), "small");
+  const RoomGoalResult near_south = planner.Plan("220", Pose2D{8.0, 1.0, 0.0});
+  ASSERT_TRUE(near_south.goal) << near_south.refusal;
+  EXPECT_EQ(near_south.goal->landmark, 2);
+  EXPECT_TRUE(Contains(near_south.goal->note, "room 220 is on 2 plates")) << near_south.goal->note;
+  EXPECT_TRUE(Contains(near_south.goal->note, "#3 '220' on wall north")) << near_south.goal->note;
+  EXPECT_TRUE(Contains(near_south.goal->note, "going to the nearest, #2")) << near_south.goal->note;
+  const RoomGoalResult near_north = planner.Plan("220", Pose2D{13.0, 1.0, 0.0});
+  ASSERT_TRUE(near_north.goal);
+  EXPECT_EQ(near_north.goal->landmark, 3);
+}
+
+TEST(RoomGoalPlanner, ARepeatedRoomIsRefusedUnderTheRefuseRuleOrWithoutAPoseListingTheRequestsThatSelectOne) {
+  RoomGoalPlannerOptions refuse;
+  refuse.duplicate_rule = "refuse";
+  const RoomGoalResult refused = RoomGoalPlanner(refuse, SmallMap(), "small").Plan("220", Pose2D{8.0, 1.0, 0.0});
+  EXPECT_FALSE(refused.goal);
+  EXPECT_TRUE(Contains(refused.refusal, "ask for one of them: '220@south', '220@north'")) << refused.refusal;
+  const RoomGoalResult no_pose = RoomGoalPlanner(RoomGoalPlannerOptions{}, SmallMap(), "small").Plan("220", std::nullopt);
+  EXPECT_FALSE(no_pose.goal);
+  EXPECT_TRUE(Contains(no_pose.refusal, "pose is unknown")) << no_pose.refusal;
+}
+
+TEST(RoomGoalPlanner, AWallSuffixSelectsOnePlateOfARepeatedRoom) {
+  RoomGoalPlannerOptions refuse;
+  refuse.duplicate_rule = "refuse";
+  const RoomGoalPlanner planner(refuse, SmallMap(), "small");
+  const RoomGoalResult north = planner.Plan("220@north", std::nullopt);
+  ASSERT_TRUE(north.goal) << north.refusal;
+  EXPECT_EQ(north.goal->landmark, 3);
+  EXPECT_EQ(north.goal->room, "220");
+  const RoomGoalResult east = planner.Plan("220@east", std::nullopt);
+  EXPECT_FALSE(east.goal);
+  EXPECT_TRUE(Contains(east.refusal, "room 220 has no plate on wall 'east'")) << east.refusal;
+}
+
+TEST(RoomGoalPlanner, InvalidOptionsNameTheField) {
+  RoomGoalPlannerOptions options;
+  options.duplicate_rule = "first";
+  EXPECT_THROW(
+      {
+        try {
+          RoomGoalPlanner(options, SmallMap(), "small");
+        } catch (const std::invalid_argument& e) {
+          EXPECT_TRUE(Contains(e.what(), "RoomGoalPlannerOptions.duplicate_rule")) << e.what();
+          throw;
+        }
+      },
+      std::invalid_argument);
+  options = RoomGoalPlannerOptions{};
+  options.wall_distance_m = -1.0;
+  EXPECT_THROW(RoomGoalPlanner(options, SmallMap(), "small"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace doorplate_localization

@@ -1,0 +1,115 @@
+// The localization experiment on a tiny symmetric corridor, with Tesseract in the loop for text_amcl.
+#include "localize_eval.h"
+
+#include <gtest/gtest.h>
+
+#include "doorplate_localization/sim/ground_truth_maps.h"
+#include "eval_test_worlds.h"
+
+namespace doorplate_localization {
+namespace {
+
+// 10 m × 2 m, closed doors flush: the laser sees a rectangle, symmetric under a half turn. Two plates a
+// wall, all different; the camera runs at 8 Hz to keep the test short (a plate stays in view for ~3 s,
+// the tracker needs two readings).
+struct TinyCorridor {
+  World world = test::CorridorWithPlates(10.0, 2.0, {{1, 3.0, "201"}, {1, 7.0, "203"}, {0, 2.5, "202"}, {0, 6.5, "204"}});
+  OccupancyGrid grid = RasterizeWorld(world, 0.05, world.sensors.laser.mount_height_m);
+  std::shared_ptr<const TextMap> text_map = std::make_shared<const TextMap>(GroundTruthTextMap(world));
+};
+
+LocalizeEvalOptions Fast(LocalizeMethod method, int trials) {
+  LocalizeEvalOptions options;
+  options.method = method;
+  options.trials = trials;
+  options.seed = 3;
+  options.speed_mps = 0.5;
+  options.max_travel_m = 40.0;
+  options.camera_rate_hz = 8.0;
+  options.filter.filter.max_particles = 2000;
+  return options;
+}
+
+TEST(LocalizeEval, TextAmclConvergesOnTheTruePoseAfterReadingAPlate) {
+  const TinyCorridor c;
+  const LocalizeEvalResult r = RunLocalizeEval(c.world, c.grid, c.text_map, c.grid, Fast(LocalizeMethod::kTextAmcl, 2));
+  ASSERT_EQ(r.trials.size(), 2u);
+  for (const LocalizeTrial& t : r.trials) {
+    EXPECT_TRUE(t.Success()) << "trial " << t.index << ": error " << t.fix.error_m << " m, " << t.fix.error_deg << " deg";
+    EXPECT_GE(t.plate_updates, 1);
+    EXPECT_GT(t.fix.travel_m, 0.0);
+    EXPECT_LT(t.fix.travel_m, 40.0);
+    EXPECT_FALSE(t.kidnapped);
+  }
+  EXPECT_NE(r.trials[0].start_pose.x_m, r.trials[1].start_pose.x_m);
+  const LocalizeSummary s = Summarize(r);
+  EXPECT_EQ(s.successes, 2);
+  EXPECT_EQ(s.wrong_convergences, 0);
+  EXPECT_EQ(s.success_rate, 1.0);
+}
+
+TEST(LocalizeEval, TextAmclRecoversFromAKidnap) {
+  const TinyCorridor c;
+  LocalizeEvalOptions options = Fast(LocalizeMethod::kTextAmcl, 1);
+  options.kidnap = true;
+  options.seed = 7;  // a short trial: converged after ~2 m, kidnapped near a plate
+  const LocalizeEvalResult r = RunLocalizeEval(c.world, c.grid, c.text_map, c.grid, options);
+  const LocalizeTrial& t = r.trials.at(0);
+  ASSERT_TRUE(t.Success());
+  ASSERT_TRUE(t.kidnapped);
+  EXPECT_GE(std::hypot(t.kidnap_pose.x_m - t.fix.truth.x_m, t.kidnap_pose.y_m - t.fix.truth.y_m), 3.0 - 0.5);
+  EXPECT_TRUE(t.recovered) << "error " << t.recovery.error_m << " m after " << t.recovery.travel_m << " m";
+  EXPECT_TRUE(t.recovery.within_tolerance);
+  EXPECT_EQ(Summarize(r).recoveries, 1);
+}
+
+TEST(LocalizeEval, AmclRunsWithoutTheCameraAndIsReproducible) {
+  const TinyCorridor c;
+  const LocalizeEvalOptions options = Fast(LocalizeMethod::kAmcl, 2);
+  const LocalizeEvalResult a = RunLocalizeEval(c.world, c.grid, nullptr, c.grid, options);
+  const LocalizeEvalResult b = RunLocalizeEval(c.world, c.grid, nullptr, c.grid, options);
+  ASSERT_EQ(a.trials.size(), 2u);
+  for (size_t i = 0; i < a.trials.size(); ++i) {
+    EXPECT_EQ(a.trials[i].plate_reports, 0);
+    EXPECT_EQ(a.trials[i].converged, b.trials[i].converged);
+    EXPECT_EQ(a.trials[i].fix.travel_m, b.trials[i].fix.travel_m);
+    EXPECT_EQ(a.trials[i].fix.estimate.x_m, b.trials[i].fix.estimate.x_m);
+    EXPECT_EQ(a.trials[i].laser_updates, b.trials[i].laser_updates);
+  }
+}
+
+TEST(LocalizeEval, RefusesTextAmclWithoutATextMapAndBadOptions) {
+  const TinyCorridor c;
+  EXPECT_THROW(RunLocalizeEval(c.world, c.grid, nullptr, c.grid, Fast(LocalizeMethod::kTextAmcl, 1)),
+               std::invalid_argument);
+  LocalizeEvalOptions options = Fast(LocalizeMethod::kAmcl, 1);
+  options.max_travel_m = 0.0;
+  EXPECT_THROW(RunLocalizeEval(c.world, c.grid, nullptr, c.grid, options), std::invalid_argument);
+}
+
+TEST(Summarize, TakesMediansOverTheConvergedTrialsOnly) {
+  LocalizeEvalResult r;
+  for (const auto& [converged, error, travel] :
+       {std::tuple<bool, double, double>{true, 0.1, 4.0}, {true, 0.2, 6.0}, {true, 3.0, 20.0}, {false, 9.0, 99.0}, {false, 0.1, 99.0}}) {
+    LocalizeTrial t;
+    t.converged = converged;
+    t.fix.error_m = error;
+    t.fix.travel_m = travel;
+    t.fix.within_tolerance = error <= 0.3;
+    r.trials.push_back(t);
+  }
+  const LocalizeSummary s = Summarize(r);
+  EXPECT_EQ(s.trials, 5);
+  EXPECT_EQ(s.successes, 2);
+  EXPECT_EQ(s.wrong_convergences, 1);
+  EXPECT_EQ(s.not_converged, 2);
+  EXPECT_EQ(s.not_converged_estimate_right, 1);
+  EXPECT_EQ(s.success_rate, 0.4);
+  EXPECT_EQ(s.median_travel_m, 6.0);
+  EXPECT_EQ(s.median_final_error_m, 0.2);
+  EXPECT_EQ(s.kidnaps, 0);
+  EXPECT_EQ(s.recovery_rate, 0.0);
+}
+
+}  // namespace
+}  // namespace doorplate_localization

@@ -1,0 +1,55 @@
+// The experiment's conversions from the simulator and the text extractor to the filter's inputs.
+#include "localize_sensors.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace doorplate_localization {
+namespace {
+
+TEST(ToLocalizationScan, CopiesTheGeometryAndTakesTheMountingPoseFromTheLaserOptions) {
+  SimulatedScan sim;
+  sim.angle_min_rad = -1.0;
+  sim.angle_increment_rad = 0.5;
+  sim.min_range_m = 0.2;
+  sim.max_range_m = 12.0;
+  sim.ranges_m = {1.0f, std::numeric_limits<float>::infinity()};
+  LaserOptions laser;
+  laser.mount_x_m = 0.1;
+  laser.mount_y_m = -0.05;
+  laser.mount_yaw_rad = 0.2;
+  const LocalizationScan scan = ToLocalizationScan(sim, laser);
+  EXPECT_EQ(scan.angle_min_rad, -1.0);
+  EXPECT_EQ(scan.angle_increment_rad, 0.5);
+  EXPECT_EQ(scan.min_range_m, 0.2);
+  EXPECT_EQ(scan.max_range_m, 12.0);
+  EXPECT_EQ(scan.ranges_m, sim.ranges_m);
+  EXPECT_EQ(scan.laser_pose.x_m, 0.1);
+  EXPECT_EQ(scan.laser_pose.y_m, -0.05);
+  EXPECT_EQ(scan.laser_pose.theta_rad, 0.2);
+  EXPECT_EQ(ValidateLocalizationScan(scan), "");
+}
+
+TEST(ToPlateReading, ComposesTheCameraYawWithTheReportBearing) {
+  PlateReport report;
+  report.text = "214";
+  report.confidence = 0.8;
+  report.bearing_rad = 0.1;  // towards the image's left: further forward for a left camera
+  const PlateReading left = ToPlateReading(report, M_PI / 2.0, 1.4);
+  EXPECT_EQ(left.text, "214");
+  EXPECT_EQ(left.confidence, 0.8);
+  EXPECT_NEAR(left.bearing_rad, M_PI / 2.0 + 0.1, 1e-12);
+  EXPECT_EQ(left.range_m, 1.4);
+  EXPECT_EQ(left.camera_side, CameraSide::kLeft);
+  EXPECT_EQ(ValidatePlateReading(left), "");
+  const PlateReading right = ToPlateReading(report, -M_PI / 2.0, std::nullopt);
+  EXPECT_NEAR(right.bearing_rad, -M_PI / 2.0 + 0.1, 1e-12);
+  EXPECT_FALSE(right.range_m.has_value());
+  EXPECT_EQ(right.camera_side, CameraSide::kRight);
+  EXPECT_EQ(ValidatePlateReading(right), "");
+}
+
+}  // namespace
+}  // namespace doorplate_localization

@@ -1,0 +1,90 @@
+// Corridor extent and plate scoring on hand-made grids and text maps.
+#include "map_measure.h"
+
+#include <gtest/gtest.h>
+
+namespace doorplate_localization {
+namespace {
+
+// An axis-aligned corridor drawn as occupied cell rows/columns: inner length × width, 5 cm cells,
+// the corridor's inner faces at cell centres 0 .. length along x and 0 .. width along y.
+OccupancyGrid DrawnCorridor(double length_m, double width_m, Pose2D origin = {-1.0, -1.0, 0.0}) {
+  const double res = 0.05;
+  OccupancyGrid grid(static_cast<int>((length_m + 2) / res) + 1, static_cast<int>((width_m + 2) / res) + 1, res,
+                     origin, OccupancyGrid::kFree);
+  const auto mark = [&](double x, double y) {
+    int cx, cy;
+    if (grid.WorldToCell({x, y}, &cx, &cy)) grid.At(cx, cy) = OccupancyGrid::kOccupied;
+  };
+  for (double x = 0; x <= length_m; x += res / 2) mark(x, 0.01), mark(x, width_m + 0.01);
+  for (double y = 0; y <= width_m; y += res / 2) mark(0.01, y), mark(length_m + 0.01, y);
+  return grid;
+}
+
+TEST(MeasureCorridor, ReadsLengthAndWidthOfADrawnCorridorToACell) {
+  const CorridorExtent e = MeasureCorridor(DrawnCorridor(20.0, 1.85));
+  ASSERT_TRUE(e.ok);
+  EXPECT_NEAR(e.length_m, 20.0, 0.05);
+  EXPECT_NEAR(e.width_m, 1.85, 0.05);
+  EXPECT_NEAR(std::abs(e.axis.x), 1.0, 1e-3);
+}
+
+TEST(MeasureCorridor, IgnoresAFewStrayCellsBeyondTheEndWall) {
+  OccupancyGrid grid = DrawnCorridor(20.0, 1.85);
+  int cx, cy;
+  ASSERT_TRUE(grid.WorldToCell({20.8, 0.9}, &cx, &cy));
+  grid.At(cx, cy) = OccupancyGrid::kOccupied;
+  const CorridorExtent e = MeasureCorridor(grid);
+  EXPECT_NEAR(e.length_m, 20.0, 0.05);
+}
+
+TEST(MeasureCorridor, AnEmptyGridIsNotMeasured) {
+  EXPECT_FALSE(MeasureCorridor(OccupancyGrid(10, 10, 0.05, {}, OccupancyGrid::kFree)).ok);
+}
+
+TEST(MeasureSegments, GivesTheRectangleOfTheWalls) {
+  const CorridorExtent e = MeasureSegments({{{0, 0}, {43.5, 0}}, {{0, 1.85}, {43.5, 1.85}}, {{0, 0}, {0, 1.85}}});
+  EXPECT_NEAR(e.length_m, 43.5, 1e-9);
+  EXPECT_NEAR(e.width_m, 1.85, 1e-9);
+}
+
+TEST(ExtentAccuracy, IsOneMinusTheRelativeError) {
+  EXPECT_NEAR(ExtentAccuracy(32.11, 43.5), 0.7382, 1e-4);  // paper Table II, gmapping
+  EXPECT_NEAR(ExtentAccuracy(44.0, 40.0), 0.9, 1e-12);
+  EXPECT_EQ(ExtentAccuracy(1.0, 0.0), 0.0);
+}
+
+TextLandmark Plate(const std::string& text, double x, double y) {
+  TextLandmark l;
+  l.text = text;
+  l.pose = {x, y, 0.0};
+  return l;
+}
+
+TEST(ScorePlates, MatchesSameTextNearestFirstThroughTheMapPose) {
+  TextMap truth, mapped;
+  truth.landmarks = {Plate("201", 2, 0), Plate("202", 2, 2), Plate("203", 6, 0)};
+  // Map frame = world shifted by (1, 0): the world's (2, 0) is the map's (1, 0).
+  mapped.landmarks = {Plate("201", 1.1, 0), Plate("202", 1.0, 2.0), Plate("203", 9, 0), Plate("209", 1, 0)};
+  const PlateScore s = ScorePlates(mapped, truth, {1.0, 0.0, 0.0});
+  EXPECT_EQ(s.plates_true, 3);
+  EXPECT_EQ(s.plates_in_map, 4);
+  EXPECT_EQ(s.plates_mapped, 2);  // 203 is 4 m off, 209 does not exist
+  EXPECT_NEAR(s.errors_m[0], 0.1, 1e-9);
+  EXPECT_NEAR(s.errors_m[1], 0.0, 1e-9);
+  EXPECT_EQ(s.errors_m[2], -1.0);
+  EXPECT_NEAR(s.rmse_m, std::sqrt(0.01 / 2), 1e-9);
+  EXPECT_NEAR(s.max_error_m, 0.1, 1e-9);
+}
+
+TEST(ScorePlates, ARepeatedTextMatchesEachTruePlateOnce) {
+  TextMap truth, mapped;
+  truth.landmarks = {Plate("220", 0, 0), Plate("220", 0, 2)};
+  mapped.landmarks = {Plate("220", 0, 0.1), Plate("220", 0, 0.2)};
+  const PlateScore s = ScorePlates(mapped, truth, {});
+  EXPECT_EQ(s.plates_mapped, 1);  // the second one is 1.8 m from the other 220
+  EXPECT_NEAR(s.errors_m[0], 0.1, 1e-9);
+}
+
+}  // namespace
+}  // namespace doorplate_localization

@@ -1,0 +1,170 @@
+#include "doorplate_localization/ros/amcl_conversions.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include <tf2/LinearMath/Quaternion.h>
+#include <tf2/utils.h>
+#include <tf2_geometry_msgs/tf2_geometry_msgs.h>
+
+namespace doorplate_localization {
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+// 360 beams over a full turn, every range `range_m`, laser at `mount` in base_link.
+LocalizationScan RingScan(float range_m, const Pose2D& mount = {}) {
+  sensor_msgs::LaserScan msg;
+  msg.angle_min = -M_PI;
+  msg.angle_increment = 2 * M_PI / 360;
+  msg.range_min = 0.15f;
+  msg.range_max = 12.0f;
+  msg.ranges.assign(360, range_m);
+  return ToLocalizationScan(msg, mount);
+}
+
+TEST(ToLocalizationScan, KeepsNonFiniteRangesAndTheMountingPose) {
+  sensor_msgs::LaserScan msg;
+  msg.angle_min = -1.0f;
+  msg.angle_increment = 0.5f;
+  msg.range_min = 0.1f;
+  msg.range_max = 8.0f;
+  msg.ranges = {1.0f, kInf, std::numeric_limits<float>::quiet_NaN()};
+  const LocalizationScan scan = ToLocalizationScan(msg, Pose2D{0.2, 0.0, M_PI});
+  EXPECT_EQ(ValidateLocalizationScan(scan), "");
+  EXPECT_FLOAT_EQ(scan.angle_min_rad, -1.0);
+  EXPECT_FLOAT_EQ(scan.max_range_m, 8.0);
+  ASSERT_EQ(scan.ranges_m.size(), 3u);
+  EXPECT_TRUE(std::isinf(scan.ranges_m[1]));
+  EXPECT_TRUE(std::isnan(scan.ranges_m[2]));
+  EXPECT_DOUBLE_EQ(scan.laser_pose.theta_rad, M_PI);
+}
+
+TextDetection Detection(const std::string& text, float bearing_rad, bool crossed, float confidence = 0.9f) {
+  TextDetection d;
+  d.text = text;
+  d.bearing_rad = bearing_rad;
+  d.crossed_center = crossed;
+  d.confidence = confidence;
+  return d;
+}
+
+TEST(ToPlateReadings, KeepsCrossedCentreReadingsWithTheBearingInBaseLinkAndTheLaserRange) {
+  TextDetectionArray msg;
+  msg.detections = {Detection("214", 0.05f, true), Detection("215", 0.0f, false), Detection("", 0.0f, true)};
+  const LocalizationScan scan = RingScan(1.5f);
+  std::vector<std::string> problems;
+  const std::vector<PlateReading> readings = ToPlateReadings(msg, CameraAxis{M_PI / 2, 1.0}, &scan, 0.02, &problems);
+  EXPECT_TRUE(problems.empty());
+  ASSERT_EQ(readings.size(), 1u);
+  EXPECT_EQ(readings[0].text, "214");
+  EXPECT_NEAR(readings[0].confidence, 0.9, 1e-6);
+  EXPECT_NEAR(readings[0].bearing_rad, M_PI / 2 + 0.05, 1e-6);
+  ASSERT_TRUE(readings[0].range_m.has_value());
+  EXPECT_NEAR(*readings[0].range_m, 1.5, 1e-6);
+  EXPECT_EQ(readings[0].camera_side, CameraSide::kUnknown);
+  EXPECT_FALSE(ToPlateReadings(msg, CameraAxis{M_PI / 2, 1.0}, nullptr, 0.02, nullptr)[0].range_m.has_value());
+}
+
+TEST(ToPlateReadings, TurnsTheBearingOfAnUpsideDownCameraClockwise) {
+  TextDetectionArray msg;
+  msg.detections = {Detection("214", 0.05f, true)};
+  const std::vector<PlateReading> readings = ToPlateReadings(msg, CameraAxis{-M_PI / 2, -1.0}, nullptr, 0.02, nullptr);
+  ASSERT_EQ(readings.size(), 1u);
+  EXPECT_NEAR(readings[0].bearing_rad, -M_PI / 2 - 0.05, 1e-6);
+}
+
+TEST(ToPlateReadings, ReportsAnInvalidReadingAndKeepsTheOthers) {
+  TextDetectionArray msg;
+  msg.detections = {Detection("214", 0.0f, true, 1.5f), Detection("216", std::nanf(""), true),
+                    Detection("218", 0.1f, true)};
+  std::vector<std::string> problems;
+  const std::vector<PlateReading> readings = ToPlateReadings(msg, CameraAxis{0.0, 1.0}, nullptr, 0.02, &problems);
+  ASSERT_EQ(readings.size(), 1u);
+  EXPECT_EQ(readings[0].text, "218");
+  ASSERT_EQ(problems.size(), 2u);
+  EXPECT_NE(problems[0].find("detection '214'"), std::string::npos);
+  EXPECT_NE(problems[0].find("confidence"), std::string::npos);
+  EXPECT_NE(problems[1].find("bearing"), std::string::npos);
+}
+
+geometry_msgs::PoseWithCovarianceStamped InitialPose() {
+  geometry_msgs::PoseWithCovarianceStamped msg;
+  msg.header.frame_id = "map";
+  msg.pose.pose = ToPoseMsg(Pose2D{3.0, 1.0, -0.5});
+  msg.pose.covariance[0] = 0.25;
+  msg.pose.covariance[1] = msg.pose.covariance[6] = 0.01;
+  msg.pose.covariance[7] = 0.16;
+  msg.pose.covariance[35] = 0.07;
+  return msg;
+}
+
+TEST(FromInitialPoseMsg, ReadsThePlanarPoseAndItsCovariance) {
+  Pose2D mean;
+  Eigen::Matrix3d cov;
+  ASSERT_EQ(FromInitialPoseMsg(InitialPose(), "map", &mean, &cov), "");
+  EXPECT_NEAR(mean.x_m, 3.0, 1e-12);
+  EXPECT_NEAR(mean.theta_rad, -0.5, 1e-12);
+  EXPECT_DOUBLE_EQ(cov(0, 0), 0.25);
+  EXPECT_DOUBLE_EQ(cov(0, 1), 0.01);
+  EXPECT_DOUBLE_EQ(cov(1, 1), 0.16);
+  EXPECT_DOUBLE_EQ(cov(2, 2), 0.07);
+  geometry_msgs::PoseWithCovarianceStamped no_frame = InitialPose();
+  no_frame.header.frame_id = "";  // amcl accepts it
+  EXPECT_EQ(FromInitialPoseMsg(no_frame, "map", &mean, &cov), "");
+}
+
+TEST(FromInitialPoseMsg, RefusesAnotherFrameABrokenQuaternionAndANegativeVariance) {
+  Pose2D mean{9.0, 9.0, 0.0};
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  geometry_msgs::PoseWithCovarianceStamped msg = InitialPose();
+  msg.header.frame_id = "odom";
+  EXPECT_EQ(FromInitialPoseMsg(msg, "map", &mean, &cov), "header.frame_id is 'odom', expected 'map'");
+  msg = InitialPose();
+  msg.pose.pose.orientation.w = 0.0;
+  msg.pose.pose.orientation.z = 0.0;
+  EXPECT_NE(FromInitialPoseMsg(msg, "map", &mean, &cov).find("unit quaternion"), std::string::npos);
+  msg = InitialPose();
+  msg.pose.covariance[35] = -1.0;
+  EXPECT_NE(FromInitialPoseMsg(msg, "map", &mean, &cov).find("positive semi-definite"), std::string::npos);
+  msg = InitialPose();
+  msg.pose.pose.position.x = std::nan("");
+  EXPECT_EQ(FromInitialPoseMsg(msg, "map", &mean, &cov), "pose must be finite");
+  EXPECT_EQ(mean.x_m, 9.0);
+}
+
+TEST(ToAmclPoseMsg, PlacesTheCovarianceAtXYAndYaw) {
+  PoseEstimate estimate;
+  estimate.pose = {1.0, 2.0, 0.5};
+  estimate.covariance << 0.04, 0.01, 0.0, 0.01, 0.09, 0.0, 0.0, 0.0, 0.02;
+  const geometry_msgs::PoseWithCovarianceStamped msg = ToAmclPoseMsg(estimate, "map", ros::Time(4.0));
+  EXPECT_EQ(msg.header.frame_id, "map");
+  EXPECT_NEAR(tf2::getYaw(msg.pose.pose.orientation), 0.5, 1e-12);
+  EXPECT_DOUBLE_EQ(msg.pose.covariance[0], 0.04);
+  EXPECT_DOUBLE_EQ(msg.pose.covariance[1], 0.01);
+  EXPECT_DOUBLE_EQ(msg.pose.covariance[6], 0.01);
+  EXPECT_DOUBLE_EQ(msg.pose.covariance[7], 0.09);
+  EXPECT_DOUBLE_EQ(msg.pose.covariance[35], 0.02);
+  EXPECT_DOUBLE_EQ(msg.pose.covariance[14], 0.0);  // z
+}
+
+TEST(ToParticleCloudMsg, OnePosePerParticle) {
+  const std::vector<Particle> particles{{Pose2D{1.0, 0.0, 0.0}, 0.5}, {Pose2D{0.0, 2.0, -1.0}, 0.5}};
+  const geometry_msgs::PoseArray msg = ToParticleCloudMsg(particles, "map", ros::Time(1.0));
+  ASSERT_EQ(msg.poses.size(), 2u);
+  EXPECT_EQ(msg.header.frame_id, "map");
+  EXPECT_DOUBLE_EQ(msg.poses[1].position.y, 2.0);
+  EXPECT_NEAR(tf2::getYaw(msg.poses[1].orientation), -1.0, 1e-12);
+}
+
+TEST(StateText, NamesTheReasonOnlyWhenLost) {
+  EXPECT_EQ(StateText(LocalizationState::kTracking, LostReason::kNone), "tracking");
+  EXPECT_EQ(StateText(LocalizationState::kConverged, LostReason::kNone), "converged");
+  EXPECT_EQ(StateText(LocalizationState::kLost, LostReason::kPlateContradiction), "lost: plate_contradiction");
+  EXPECT_EQ(StateText(LocalizationState::kLost, LostReason::kLikelihoodCollapse), "lost: likelihood_collapse");
+}
+
+}  // namespace
+}  // namespace doorplate_localization

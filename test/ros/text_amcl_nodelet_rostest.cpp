@@ -1,0 +1,355 @@
+// Checker node of text_amcl_nodelet.test: the simulator, the wall follower (started disabled), the text
+// extractor and Text AMCL run in one nodelet manager on the paper's closed-door corridor. Checks
+// LoadTextAmclOptions against this node's parameters, amcl's interface (services, latched topics, the text
+// landmark markers), that bad input is reported naming the topic while the node keeps running, global
+// localization (after global_localization and a drive along the corridor, ~state says converged and
+// amcl_pose and tf map -> base_link agree with base_pose_ground_truth), then ~save_pose_rate and set_map.
+// Every wait is on a condition with a wall-clock timeout. The cases run in order: the drive starts in the
+// global localization case.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <deque>
+#include <functional>
+#include <limits>
+#include <set>
+#include <string>
+
+#include <geometry_msgs/PoseArray.h>
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <nav_msgs/SetMap.h>
+#include <gtest/gtest.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/callback_queue.h>
+#include <ros/ros.h>
+#include <rosgraph_msgs/Log.h>
+#include <sensor_msgs/LaserScan.h>
+#include <std_msgs/String.h>
+#include <std_srvs/Empty.h>
+#include <std_srvs/SetBool.h>
+#include <tf2/utils.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include "doorplate_localization/TextDetectionArray.h"
+#include "text_amcl_options.h"
+#include "rostest_util.h"
+
+namespace doorplate_localization {
+namespace {
+
+using rostest_util::WaitFor;
+
+double DegreesBetween(double a_rad, double b_rad) {
+  return std::fabs(std::remainder(a_rad - b_rad, 2.0 * M_PI)) * 180.0 / M_PI;
+}
+
+// Everything the nodelet publishes, and the simulator's ground truth, as the checker sees it.
+struct Listener {
+  ros::NodeHandle nh;
+  std::string state;
+  std::set<std::string> states_seen;
+  geometry_msgs::PoseWithCovarianceStamped::ConstPtr pose;
+  geometry_msgs::PoseArray::ConstPtr cloud;
+  int clouds = 0;
+  int poses = 0;
+  visualization_msgs::MarkerArray::ConstPtr markers;
+  std::deque<nav_msgs::Odometry::ConstPtr> truth;  // the last ~40 s
+  // WARN and above from /rosout, all of them.
+  rostest_util::RosoutLog warnings{rosgraph_msgs::Log::WARN, std::numeric_limits<std::size_t>::max()};
+  ros::Subscriber subs[5];
+
+  Listener() {
+    subs[0] = nh.subscribe<std_msgs::String>("amcl/state", 10, [this](const std_msgs::String::ConstPtr& m) {
+      state = m->data;
+      states_seen.insert(m->data);
+    });
+    subs[1] = nh.subscribe<geometry_msgs::PoseWithCovarianceStamped>(
+        "amcl_pose", 10, [this](const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) {
+          pose = m;
+          ++poses;
+        });
+    subs[2] = nh.subscribe<geometry_msgs::PoseArray>("particlecloud", 2, [this](const geometry_msgs::PoseArray::ConstPtr& m) {
+      cloud = m;
+      ++clouds;
+    });
+    subs[3] = nh.subscribe<visualization_msgs::MarkerArray>(
+        "text_landmarks", 1, [this](const visualization_msgs::MarkerArray::ConstPtr& m) { markers = m; });
+    subs[4] = nh.subscribe<nav_msgs::Odometry>("base_pose_ground_truth", 100, [this](const nav_msgs::Odometry::ConstPtr& m) {
+      truth.push_back(m);
+      if (truth.size() > 2000) truth.pop_front();
+    });
+  }
+
+  bool Warned(const std::string& a, const std::string& b) const { return warnings.Has(a, b); }
+
+  // The ground-truth message closest in time to `stamp`; null if none within 0.1 s.
+  nav_msgs::Odometry::ConstPtr TruthAt(const ros::Time& stamp) const {
+    nav_msgs::Odometry::ConstPtr best;
+    double best_dt = 0.1;
+    for (const auto& m : truth) {
+      const double dt = std::fabs((m->header.stamp - stamp).toSec());
+      if (dt <= best_dt) {
+        best_dt = dt;
+        best = m;
+      }
+    }
+    return best;
+  }
+};
+
+Listener* listener = nullptr;
+
+// LoadTextAmclOptions, on parameters set under this node's private namespace.
+TEST(LoadTextAmclOptions, WithoutParametersGivesAmclsDefaultsExceptRecovery) {
+  const TextAmclNodeOptions o = LoadTextAmclOptions(ros::NodeHandle("~empty"));
+  EXPECT_EQ(o.setup.filter.min_particles, 100);
+  EXPECT_EQ(o.setup.filter.max_particles, 5000);
+  EXPECT_DOUBLE_EQ(o.setup.filter.kld_err, 0.01);
+  EXPECT_DOUBLE_EQ(o.setup.filter.update_min_a_rad, M_PI / 6.0);
+  EXPECT_EQ(o.setup.likelihood_field.beams.laser_max_beams, 30);
+  EXPECT_EQ(o.setup.laser_model_type, LaserModelType::kLikelihoodField);
+  EXPECT_EQ(o.setup.motion.odom_model_type, OdomModelType::kDiff);
+  EXPECT_DOUBLE_EQ(o.setup.filter.recovery_alpha_slow, 0.001);  // amcl: 0 (documented)
+  EXPECT_DOUBLE_EQ(o.transform_tolerance_s, 0.1);
+  EXPECT_DOUBLE_EQ(o.initial_covariance(0, 0), 0.25);
+  EXPECT_DOUBLE_EQ(o.initial_covariance(2, 2), (M_PI / 12.0) * (M_PI / 12.0));
+  EXPECT_EQ(o.global_frame_id, "map");
+  EXPECT_FALSE(o.use_map_topic);
+  EXPECT_TRUE(o.map_file.empty());
+}
+
+void ExpectErrorNaming(const ros::NodeHandle& nh, const std::string& parameter) {
+  rostest_util::ExpectLoadErrorNaming<ParameterError>(LoadTextAmclOptions, nh, parameter);
+}
+
+TEST(LoadTextAmclOptions, RejectsOutOfRangeMistypedAndUnsupportedValuesNamingTheParameter) {
+  ros::NodeHandle nh("~bad");
+  const std::pair<std::string, XmlRpc::XmlRpcValue> cases[] = {
+      {"kld_err", XmlRpc::XmlRpcValue(0.0)},
+      {"min_particles", XmlRpc::XmlRpcValue("many")},
+      {"odom_model_type", XmlRpc::XmlRpcValue("omni")},
+      {"laser_model_type", XmlRpc::XmlRpcValue("sonar")},
+      {"laser_z_hit", XmlRpc::XmlRpcValue(1.5)},
+      {"base_frame_id", XmlRpc::XmlRpcValue("/base_link")},
+      {"selective_resampling", XmlRpc::XmlRpcValue(true)},
+      {"recovery_alpha_fast", XmlRpc::XmlRpcValue(0.0001)},  // < recovery_alpha_slow (0.001)
+      {"text_max_view_angle_rad", XmlRpc::XmlRpcValue(2.0)},
+  };
+  for (const auto& c : cases) {
+    nh.setParam(c.first, c.second);
+    ExpectErrorNaming(nh, c.first);
+    nh.deleteParam(c.first);
+  }
+  nh.setParam("max_particles", 50);  // < min_particles
+  ExpectErrorNaming(nh, "max_particles");
+}
+
+TEST(LoadTextAmclOptions, TheShippedConfigLoads) {
+  const TextAmclNodeOptions o = LoadTextAmclOptions(ros::NodeHandle("/amcl"));
+  EXPECT_EQ(o.setup.likelihood_field.beams.laser_max_beams, 60);
+  EXPECT_EQ(o.setup.motion.odom_model_type, OdomModelType::kDiffCorrected);
+  EXPECT_TRUE(o.setup.use_text);
+  EXPECT_NE(o.map_file.find("paper_sim_closed_doors.yaml"), std::string::npos);
+  EXPECT_NE(o.text_map_file.find("paper_sim_closed_doors.text_map.yaml"), std::string::npos);
+}
+
+// The nodelet, in the manager.
+TEST(TextAmclNodelet, OffersAmclsServicesAndLatchedTopicsAndTheTextLandmarks) {
+  for (const char* service : {"global_localization", "request_nomotion_update", "set_map"}) {
+    EXPECT_TRUE(ros::service::waitForService(service, ros::Duration(60.0))) << service;
+  }
+  ASSERT_TRUE(WaitFor([] { return listener->markers && listener->cloud && listener->pose && !listener->state.empty(); },
+                      60.0));
+  int landmark_count = 0;
+  ASSERT_TRUE(ros::NodeHandle("~").getParam("landmark_count", landmark_count));
+  const auto& markers = listener->markers->markers;
+  ASSERT_EQ(static_cast<int>(markers.size()), 1 + 2 * landmark_count);
+  EXPECT_EQ(markers[0].action, visualization_msgs::Marker::DELETEALL);
+  std::set<std::string> texts;
+  for (const auto& m : markers) {
+    if (m.type == visualization_msgs::Marker::TEXT_VIEW_FACING) texts.insert(m.text);
+    if (m.action == visualization_msgs::Marker::ADD) {
+      EXPECT_EQ(m.header.frame_id, "map");
+    }
+  }
+  EXPECT_EQ(texts, (std::set<std::string>{"101", "102", "103", "104", "105", "106", "107", "108", "109", "110"}));
+  EXPECT_EQ(listener->cloud->poses.size(), 5000u);  // started at ~initial_pose_* with max_particles
+  EXPECT_EQ(listener->cloud->header.frame_id, "map");
+  EXPECT_EQ(listener->pose->header.frame_id, "map");
+}
+
+TEST(TextAmclNodelet, ReportsBadInputNamingTheTopicAndKeepsRunning) {
+  ros::NodeHandle nh;
+  ros::Publisher scan_pub = nh.advertise<sensor_msgs::LaserScan>("scan", 1);
+  ros::Publisher pose_pub = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("initialpose", 1);
+  ros::Publisher text_pub = nh.advertise<TextDetectionArray>("text_detections", 1);
+  ASSERT_TRUE(WaitFor([] { return ros::Time::now().toSec() > 2.0; }, 60.0)) << "no sim clock";
+  sensor_msgs::LaserScan scan;
+  scan.header.frame_id = "laser";
+  scan.header.stamp = ros::Time::now();
+  scan.angle_min = -M_PI;
+  scan.angle_increment = std::numeric_limits<float>::quiet_NaN();
+  scan.range_min = 0.15f;
+  scan.range_max = 12.0f;
+  scan.ranges.assign(360, 1.0f);
+  EXPECT_TRUE(WaitFor([] { return listener->Warned("/scan", "angle_increment must be finite"); }, 30.0,
+                      [&] { scan_pub.publish(scan); }));
+  scan.angle_increment = 2 * M_PI / 360;
+  scan.header.stamp = ros::Time(0.5);  // before the simulator's scans
+  EXPECT_TRUE(WaitFor([] { return listener->Warned("/scan", "time went backwards"); }, 30.0,
+                      [&] { scan_pub.publish(scan); }));
+  geometry_msgs::PoseWithCovarianceStamped initial;
+  initial.header.frame_id = "odom";
+  initial.pose.pose.orientation.w = 1.0;
+  EXPECT_TRUE(WaitFor([] { return listener->Warned("/initialpose", "expected 'map'"); }, 30.0,
+                      [&] { pose_pub.publish(initial); }));
+  TextDetectionArray detections;
+  detections.header.frame_id = "nowhere";
+  detections.detections.resize(1);
+  detections.detections[0].text = "105";
+  detections.detections[0].confidence = 0.9f;
+  detections.detections[0].crossed_center = true;
+  EXPECT_TRUE(WaitFor([] { return listener->Warned("/text_detections", "no tf from 'nowhere'"); }, 30.0,
+                      [&] { text_pub.publish(detections); }));
+  detections.header.frame_id = "camera_optical";
+  detections.detections[0].text = "999";
+  EXPECT_TRUE(WaitFor([] { return listener->Warned("/text_detections", "room '999' is not in the text map"); }, 30.0,
+                      [&] { text_pub.publish(detections); }));
+  // Still alive: a no-motion update makes the next scan publish a new estimate.
+  const int before = listener->poses;
+  std_srvs::Empty empty;
+  EXPECT_TRUE(WaitFor([&] { return listener->poses > before; }, 30.0,
+                      [&] { ros::service::call("request_nomotion_update", empty); }));
+  EXPECT_EQ(listener->state.rfind("lost", 0), std::string::npos) << listener->state;
+}
+
+TEST(TextAmclNodelet, GlobalLocalizationConvergesOnTheTruePoseWhileFollowingTheCorridor) {
+  ros::NodeHandle nh, pnh("~");
+  double max_position_error_m = 0.0, max_heading_error_deg = 0.0;
+  ASSERT_TRUE(pnh.getParam("max_position_error_m", max_position_error_m));
+  ASSERT_TRUE(pnh.getParam("max_heading_error_deg", max_heading_error_deg));
+  std_srvs::Empty empty;
+  ASSERT_TRUE(ros::service::call("global_localization", empty));
+  // The next cloud of max_particles spread along the corridor (clouds of earlier updates may still arrive).
+  const auto spread_m = [] {
+    double min_x = 1e9, max_x = -1e9;
+    for (const auto& p : listener->cloud->poses) {
+      min_x = std::min(min_x, p.position.x);
+      max_x = std::max(max_x, p.position.x);
+    }
+    return max_x - min_x;
+  };
+  EXPECT_TRUE(WaitFor([&] { return listener->cloud->poses.size() == 5000u && spread_m() > 12.0; }))
+      << "global localization spreads max_particles along the 15.5 m corridor; last cloud: "
+      << listener->cloud->poses.size() << " poses over " << spread_m() << " m";
+  EXPECT_NE(listener->state, "converged");
+
+  ros::ServiceClient enable = nh.serviceClient<std_srvs::SetBool>("corridor_follower/enable");
+  ASSERT_TRUE(enable.waitForExistence(ros::Duration(30.0)));
+  std_srvs::SetBool drive;
+  drive.request.data = true;
+  ASSERT_TRUE(enable.call(drive));
+  ASSERT_TRUE(WaitFor([] { return listener->state == "converged"; }, 300.0)) << "state " << listener->state;
+  const auto estimate = listener->pose;  // published just before the state changed
+  ASSERT_TRUE(WaitFor([&] { return listener->TruthAt(estimate->header.stamp) != nullptr; }, 10.0));
+  const auto truth = listener->TruthAt(estimate->header.stamp);
+  const double error_m = std::hypot(estimate->pose.pose.position.x - truth->pose.pose.position.x,
+                                    estimate->pose.pose.position.y - truth->pose.pose.position.y);
+  const double error_deg =
+      DegreesBetween(tf2::getYaw(estimate->pose.pose.orientation), tf2::getYaw(truth->pose.pose.orientation));
+  std::printf("converged at %.2f s: estimate (%.3f, %.3f), truth (%.3f, %.3f): %.3f m, %.2f deg\n",
+              estimate->header.stamp.toSec(), estimate->pose.pose.position.x, estimate->pose.pose.position.y,
+              truth->pose.pose.position.x, truth->pose.pose.position.y, error_m, error_deg);
+  std::fflush(stdout);
+  ROS_INFO("converged: %.3f m, %.2f deg from the truth", error_m, error_deg);
+  EXPECT_LT(error_m, max_position_error_m);
+  EXPECT_LT(error_deg, max_heading_error_deg);
+  EXPECT_GT(estimate->pose.covariance[0], 0.0);
+
+  // tf map -> odom -> base_link agrees with the truth too (at the latest common time).
+  tf2_ros::Buffer buffer;
+  tf2_ros::TransformListener tf_listener(buffer);
+  geometry_msgs::TransformStamped map_to_base;
+  ASSERT_TRUE(WaitFor([&] {
+    try {
+      map_to_base = buffer.lookupTransform("map", "base_link", ros::Time(0));
+      return listener->TruthAt(map_to_base.header.stamp) != nullptr;
+    } catch (const tf2::TransformException&) {
+      return false;
+    }
+  }));
+  const auto truth_tf = listener->TruthAt(map_to_base.header.stamp);
+  EXPECT_LT(std::hypot(map_to_base.transform.translation.x - truth_tf->pose.pose.position.x,
+                       map_to_base.transform.translation.y - truth_tf->pose.pose.position.y),
+            max_position_error_m);
+  EXPECT_LT(DegreesBetween(tf2::getYaw(map_to_base.transform.rotation), tf2::getYaw(truth_tf->pose.pose.orientation)),
+            max_heading_error_deg);
+
+  // The particle cloud has gathered around the estimate.
+  const int clouds_now = listener->clouds;
+  ASSERT_TRUE(WaitFor([&] { return listener->clouds > clouds_now; }, 60.0));
+  int near = 0;
+  const auto& cloud = listener->cloud->poses;
+  for (const auto& p : cloud) {
+    near += std::hypot(p.position.x - estimate->pose.pose.position.x, p.position.y - estimate->pose.pose.position.y) <
+            1.0;
+  }
+  EXPECT_GT(near, 0.8 * cloud.size());
+}
+
+TEST(TextAmclNodelet, SavesTheEstimateAsTheInitialPoseAndSetMapRestartsAtTheGivenPose) {
+  ros::NodeHandle nh;
+  ASSERT_FALSE(listener->truth.empty());
+  // ~save_pose_rate (0.5 Hz): the converged estimate is written back to ~initial_pose_*.
+  double saved_x = -100.0;
+  EXPECT_TRUE(WaitFor([&] {
+    return nh.getParam("amcl/initial_pose_x", saved_x) &&
+           std::fabs(saved_x - listener->truth.back()->pose.pose.position.x) < 0.5;
+  })) << "saved initial_pose_x " << saved_x;
+
+  nav_msgs::OccupancyGrid::ConstPtr map;
+  ros::Subscriber map_sub =
+      nh.subscribe<nav_msgs::OccupancyGrid>("map", 1, [&](const nav_msgs::OccupancyGrid::ConstPtr& m) { map = m; });
+  ASSERT_TRUE(WaitFor([&] { return map != nullptr; })) << "the ~map_file map is latched on map";
+  nav_msgs::SetMap set_map;
+  set_map.request.map = *map;
+  set_map.request.map.data.resize(3);
+  ASSERT_TRUE(ros::service::call("set_map", set_map));
+  EXPECT_FALSE(set_map.response.success) << "a map whose data does not match its size is refused";
+  EXPECT_TRUE(WaitFor([] { return listener->Warned("/set_map", "data has 3 cells"); }));
+
+  const auto truth = listener->truth.back();
+  set_map.request.map = *map;
+  set_map.request.initial_pose.header.frame_id = "map";
+  set_map.request.initial_pose.pose.pose = truth->pose.pose;
+  set_map.request.initial_pose.pose.covariance[0] = set_map.request.initial_pose.pose.covariance[7] = 0.01;
+  set_map.request.initial_pose.pose.covariance[35] = 0.01;
+  const int clouds_before = listener->clouds;
+  ASSERT_TRUE(ros::service::call("set_map", set_map));
+  EXPECT_TRUE(set_map.response.success);
+  // The filter restarts with max_particles around the given pose.
+  const auto near_truth = [&] {
+    int near = 0;
+    for (const auto& p : listener->cloud->poses) {
+      near += std::hypot(p.position.x - truth->pose.pose.position.x, p.position.y - truth->pose.pose.position.y) < 0.5;
+    }
+    return near;
+  };
+  EXPECT_TRUE(WaitFor([&] {
+    return listener->clouds > clouds_before && listener->cloud->poses.size() == 5000u && near_truth() > 4500;
+  })) << listener->cloud->poses.size() << " poses, " << near_truth() << " within 0.5 m of the given pose";
+}
+
+}  // namespace
+}  // namespace doorplate_localization
+
+int main(int argc, char** argv) {
+  return doorplate_localization::rostest_util::RunCheckerTests(argc, argv, "text_amcl_checker", [] {
+    doorplate_localization::Listener listener;  // after ros::init: it subscribes
+    doorplate_localization::listener = &listener;
+    return RUN_ALL_TESTS();
+  });
+}

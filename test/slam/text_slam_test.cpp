@@ -1,0 +1,179 @@
+#include "doorplate_localization/slam/text_slam.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include <gtest/gtest.h>
+
+#include "doorplate_localization/slam/rbpf_slam_options.h"
+#include "slam_test_worlds.h"
+
+namespace doorplate_localization {
+namespace {
+
+TextSlamOptions FewParticles(int n) {
+  TextSlamOptions o;
+  o.slam.num_particles = n;
+  return o;
+}
+
+PlateSighting Sighting(const std::string& text, double bearing_rad, std::optional<double> range_m = 1.0) {
+  PlateSighting s;
+  s.text = text;
+  s.confidence = 0.9;
+  s.bearing_rad = bearing_rad;
+  s.range_m = range_m;
+  return s;
+}
+
+TEST(TextSlam, APlateBeforeTheFirstScanIsIgnored) {
+  TextSlam slam(FewParticles(3));
+  const TextSlamPlateResult r = slam.AddPlate(Sighting("201", M_PI / 2), {});
+  EXPECT_EQ(r.outcome, PlateOutcome::kNoScanYet);
+  EXPECT_FALSE(r.used());
+  EXPECT_EQ(r.landmark_index, -1);
+}
+
+TEST(TextSlam, APlateIsPlacedAtThePoseComposedWithBearingAndRangeFacingTheRobot) {
+  TextSlam slam(FewParticles(3));
+  slam.AddScan(test::Scan(test::Room(), {0, 0, 0}), {0, 0, 0}, 0);
+  // Read 0.2 m of odometry after the scan, on the left at 1.5 m.
+  const TextSlamPlateResult r = slam.AddPlate(Sighting("201", M_PI / 2, 1.5), {0.2, 0, 0});
+  EXPECT_EQ(r.outcome, PlateOutcome::kNewLandmark);
+  EXPECT_EQ(r.landmark_index, 0);
+  const std::vector<SlamLandmark> plates = slam.BestLandmarks();
+  ASSERT_EQ(plates.size(), 1u);
+  EXPECT_NEAR(plates[0].position.x, 0.2, 1e-9);
+  EXPECT_NEAR(plates[0].position.y, 1.5, 1e-9);
+  EXPECT_NEAR(plates[0].yaw_rad, -M_PI / 2, 1e-9);  // faces back into the corridor
+  EXPECT_EQ(plates[0].side, 1);
+  EXPECT_EQ(slam.num_landmarks(), 1);
+}
+
+TEST(TextSlam, WithoutARangeThePlateTakesTheLastScansBeamAlongTheBearing) {
+  TextSlam slam(FewParticles(3));
+  slam.AddScan(test::Scan(test::Room(), {0, 0, 0}), {0, 0, 0}, 0);
+  const TextSlamPlateResult r = slam.AddPlate(Sighting("201", -M_PI / 2, std::nullopt), {0, 0, 0});
+  ASSERT_TRUE(r.used());
+  EXPECT_NEAR(r.range_m, 2.025, 0.01);  // the south wall of the room
+  EXPECT_NEAR(slam.BestLandmarks()[0].position.y, -2.025, 0.01);
+}
+
+TEST(TextSlam, UnusableReadingsAreIgnoredWithTheReason) {
+  TextSlamOptions o = FewParticles(3);
+  o.min_confidence = 0.5;
+  TextSlam slam(o);
+  slam.AddScan(test::Scan(test::Corridor(), {0, 0, 0}), {0, 0, 0}, 0);
+  PlateSighting unsure = Sighting("201", M_PI / 2);
+  unsure.confidence = 0.3;
+  EXPECT_EQ(slam.AddPlate(unsure, {}).outcome, PlateOutcome::kLowConfidence);
+  EXPECT_EQ(slam.AddPlate(Sighting("201", M_PI / 2, 9.0), {}).outcome, PlateOutcome::kRangeOutOfBounds);
+  // Straight ahead along the corridor nothing echoes within 20 m: no range.
+  EXPECT_EQ(slam.AddPlate(Sighting("201", 0.0, std::nullopt), {}).outcome, PlateOutcome::kNoRange);
+  EXPECT_EQ(slam.AddPlate(Sighting("201", M_PI / 2), {5.0, 0, 0}).outcome, PlateOutcome::kTooFarFromLastScan);
+  EXPECT_EQ(slam.num_landmarks(), 0);
+}
+
+TEST(TextSlam, BadFieldsThrowNamingTheField) {
+  TextSlam slam(FewParticles(2));
+  slam.AddScan(test::Scan(test::Room(), {0, 0, 0}), {0, 0, 0}, 0);
+  PlateSighting s = Sighting("201", NAN);
+  try {
+    slam.AddPlate(s, {});
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("PlateSighting.bearing_rad"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(slam.AddPlate(Sighting("", 1.0), {}), std::invalid_argument);
+  EXPECT_THROW(slam.AddPlate(Sighting("201", 1.0, -1.0), {}), std::invalid_argument);
+  s = Sighting("201", 1.0);
+  s.confidence = 1.5;
+  EXPECT_THROW(slam.AddPlate(s, {}), std::invalid_argument);
+  EXPECT_THROW(slam.AddPlate(Sighting("201", 1.0), {NAN, 0, 0}), std::invalid_argument);
+  TextSlamOptions bad = FewParticles(2);
+  bad.plate_sigma_m = 0.0;
+  EXPECT_THROW({ TextSlam t(bad); }, std::invalid_argument);
+}
+
+TEST(TextSlam, ReadingTheSamePlateAgainReobservesItAndAveragesThePosition) {
+  TextSlam slam(FewParticles(4));
+  slam.AddScan(test::Scan(test::Room(), {0, 0, 0}), {0, 0, 0}, 0);
+  EXPECT_EQ(slam.AddPlate(Sighting("201", M_PI / 2, 1.0), {}).outcome, PlateOutcome::kNewLandmark);
+  const TextSlamPlateResult again = slam.AddPlate(Sighting("201", M_PI / 2, 1.2), {});
+  EXPECT_EQ(again.outcome, PlateOutcome::kReobserved);
+  EXPECT_EQ(again.landmark_index, 0);
+  // Another text at the same place, and the same text on the other wall, are other landmarks.
+  EXPECT_EQ(slam.AddPlate(Sighting("203", M_PI / 2, 1.0), {}).outcome, PlateOutcome::kNewLandmark);
+  EXPECT_EQ(slam.AddPlate(Sighting("201", -M_PI / 2, 1.0), {}).outcome, PlateOutcome::kNewLandmark);
+  const std::vector<SlamLandmark> plates = slam.BestLandmarks();
+  ASSERT_EQ(plates.size(), 3u);
+  EXPECT_EQ(plates[0].observations, 2);
+  EXPECT_NEAR(plates[0].position.y, 1.1, 1e-9);
+  for (const SlamParticle& p : slam.slam().particles()) {
+    ASSERT_TRUE(p.landmarks);
+    EXPECT_EQ(p.landmarks->size(), 3u);
+  }
+}
+
+// Out 4 m along a featureless corridor and back; on the way back odometry reads 20 % long, and the
+// scans cannot tell (degenerate along x), so the particles end near the odometry's x = -0.8 m. Re-reading
+// the plate first read at x = 0 pulls the best particle back to it, unless text weighting is off.
+double BestXAfterReturningToThePlate(double text_likelihood_gain) {
+  TextSlamOptions o = FewParticles(30);
+  o.text_likelihood_gain = text_likelihood_gain;
+  TextSlam slam(o);
+  slam.AddScan(test::Scan(test::Corridor(), {0, 0, 0}), {0, 0, 0}, 0);
+  EXPECT_EQ(slam.AddPlate(Sighting("201", M_PI / 2, 1.0), {}).outcome, PlateOutcome::kNewLandmark);
+  int index = 1;
+  for (double x = 0.5; x <= 4.01; x += 0.5) slam.AddScan(test::Scan(test::Corridor(), {x, 0, 0}), {x, 0, 0}, index++);
+  Pose2D odometry{4, 0, M_PI};
+  for (double x = 3.5; x >= -0.01; x -= 0.5) {
+    odometry = {4 - 1.2 * (4 - x), 0, M_PI};
+    slam.AddScan(test::Scan(test::Corridor(), {x, 0, M_PI}), odometry, index++);
+  }
+  EXPECT_EQ(slam.AddPlate(Sighting("201", -M_PI / 2, 1.0), odometry).outcome, PlateOutcome::kReobserved);
+  return slam.BestPose().x_m;
+}
+
+TEST(TextSlam, ReobservingAPlateFavoursTheParticlesThatPutItBackInPlace) {
+  const double without_text = BestXAfterReturningToThePlate(0.0);  // laser and odometry alone
+  const double with_text = BestXAfterReturningToThePlate(1.0);
+  std::printf("best x without text %.3f, with text %.3f\n", without_text, with_text);
+  EXPECT_GT(std::abs(without_text), 0.3);
+  EXPECT_LT(std::abs(with_text), 0.5 * std::abs(without_text));
+}
+
+TEST(TextSlam, TheTextMapListsPlatesByWallWithDistancesFromTheMapAndFromOdometry) {
+  TextSlam slam(FewParticles(3));
+  slam.AddScan(test::Scan(test::Corridor(), {0, 0, 0}), {0, 0, 0}, 0);
+  slam.AddPlate(Sighting("201", M_PI / 2, 1.0), {0, 0, 0});
+  slam.AddScan(test::Scan(test::Corridor(), {1, 0, 0}), {1, 0, 0}, 1);
+  slam.AddPlate(Sighting("203", M_PI / 2, 1.0), {1.2, 0, 0});
+  slam.AddPlate(Sighting("202", -M_PI / 2, 1.0), {1.2, 0, 0});
+  const TextMap map = slam.BuildTextMap();
+  ASSERT_EQ(map.landmarks.size(), 3u);
+  EXPECT_EQ(map.landmarks[0].wall, map.landmarks[1].wall);
+  EXPECT_NE(map.landmarks[0].wall, map.landmarks[2].wall);
+  ASSERT_EQ(map.adjacent.size(), 2u);  // 201-203 from the map and from odometry
+  EXPECT_EQ(map.adjacent[0].source, "map");
+  EXPECT_EQ(map.adjacent[1].source, "odometry");
+  EXPECT_NEAR(map.adjacent[1].distance_m, 1.2, 1e-9);
+  EXPECT_NEAR(map.adjacent[0].distance_m, 1.2, 0.15);
+}
+
+TEST(TextSlam, TextOptionsHaveNamesInTheSharedTable) {
+  TextSlamOptions o;
+  SetTextSlamOption("text.plate_sigma_m", 0.3, &o);
+  SetTextSlamOption("num_particles", 7, &o);
+  EXPECT_EQ(o.plate_sigma_m, 0.3);
+  EXPECT_EQ(o.slam.num_particles, 7);
+  EXPECT_EQ(GetTextSlamOption("text.plate_sigma_m", o), 0.3);
+  EXPECT_THROW(SetTextSlamOption("text.nope", 1, &o), std::invalid_argument);
+  const std::vector<std::string> names = TextSlamOptionNames();
+  EXPECT_NE(std::find(names.begin(), names.end(), "text.min_confidence"), names.end());
+  for (const std::string& name : names) EXPECT_NO_THROW(GetTextSlamOption(name, o)) << name;
+}
+
+}  // namespace
+}  // namespace doorplate_localization
