@@ -25,7 +25,9 @@ echo "$summary" | sed '$d'
 read -r passed failed <<< "$(echo "$summary" | tail -n1)"
 
 echo "== rviz screenshot test (Xvfb, software GL): particles and text landmarks drawn"
-viz_summary=$(bash "$repo/test/viz/rviz_screenshot_test.sh" "$build" 2>&1 | tee /dev/stderr | tail -n1)
+# (Not `tee /dev/stderr`: when stderr is a file, opening /dev/stderr truncates it and the log above is lost.)
+viz_output=$(bash "$repo/test/viz/rviz_screenshot_test.sh" "$build" 2>&1); echo "$viz_output"
+viz_summary=$(tail -n1 <<< "$viz_output")
 if [[ "$viz_summary" =~ ^viz:\ ([0-9]+)\ passed,\ ([0-9]+)\ failed$ ]]; then
   passed=$((passed + BASH_REMATCH[1])); failed=$((failed + BASH_REMATCH[2]))
 else
@@ -49,7 +51,8 @@ if [ "$sanitize" = 1 ]; then
     fi
   done < "$asan/core_tests.txt"
   echo "== fuzzing the file parsers (libFuzzer + ASan/UBSan/LeakSanitizer, ${DOORPLATE_FUZZ_SECONDS:-30} s each)"
-  fuzz_summary=$(bash "$repo/scripts/fuzz.sh" --seconds "${DOORPLATE_FUZZ_SECONDS:-30}" 2>&1 | tee /dev/stderr | tail -n1)
+  fuzz_output=$(bash "$repo/scripts/fuzz.sh" --seconds "${DOORPLATE_FUZZ_SECONDS:-30}" 2>&1); echo "$fuzz_output"
+  fuzz_summary=$(tail -n1 <<< "$fuzz_output")
   if [[ "$fuzz_summary" =~ ^fuzz:\ ([0-9]+)\ passed,\ ([0-9]+)\ failed$ ]]; then
     passed=$((passed + BASH_REMATCH[1])); failed=$((failed + BASH_REMATCH[2]))
   else
