@@ -6,16 +6,12 @@
 #include <string>
 #include <vector>
 
+#include "plate_fixture.h"
+
 namespace doorplate_localization {
 namespace {
 
-TextLandmark Plate(const std::string& text, double x_m, double y_m, double yaw_rad, const std::string& wall) {
-  TextLandmark plate;
-  plate.text = text;
-  plate.pose = {x_m, y_m, yaw_rad};
-  plate.wall = wall;
-  return plate;
-}
+using test::Plate;
 
 // South wall (facing +y): "102" x=1, "104" x=4, "106" x=9 with uneven spacing; north wall: "101" x=2.
 // The odometry measured 3.2 m for 102-104 while mapping (the map says 3).

@@ -6,16 +6,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "plate_fixture.h"
+
 namespace doorplate_localization {
 namespace {
 
-TextLandmark Plate(const std::string& text, double x_m, double y_m, double yaw_rad, const std::string& wall) {
-  TextLandmark plate;
-  plate.text = text;
-  plate.pose = {x_m, y_m, yaw_rad};
-  plate.wall = wall;
-  return plate;
-}
+using test::Plate;
 
 // A 2 m wide corridor along x: "101" on the north wall (facing -y), "102" on the south wall (facing +y), and
 // "220" once on each wall.
