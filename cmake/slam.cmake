@@ -4,15 +4,21 @@ add_library(doorplate_slam
   src/slam/carmen_reader.cpp
   src/slam/correlative_search.cpp
   src/slam/motion_model.cpp
+  src/slam/pose_graph.cpp
   src/slam/rbpf_slam.cpp
   src/slam/rbpf_slam_options.cpp
+  src/slam/scan_icp.cpp
   src/slam/scan_matcher.cpp
+  src/slam/slam_back_end.cpp
   src/slam/text_slam.cpp
   src/slam/text_slam_map.cpp
   src/slam/tiled_grid.cpp
   src/slam/trajectory_tree.cpp)
-target_include_directories(doorplate_slam PUBLIC include)
-target_link_libraries(doorplate_slam PUBLIC doorplate_common doorplate_maps PRIVATE Eigen3::Eigen)
+# SuiteSparse CHOLMOD solves the back end's pose graph (through Eigen's CholmodSupport).
+find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
+find_library(CHOLMOD_LIBRARY cholmod REQUIRED)
+target_include_directories(doorplate_slam PUBLIC include PRIVATE ${CHOLMOD_INCLUDE_DIR})
+target_link_libraries(doorplate_slam PUBLIC doorplate_common doorplate_maps Eigen3::Eigen PRIVATE ${CHOLMOD_LIBRARY})
 install(TARGETS doorplate_slam LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 
 add_executable(doorplate_map_log src/tools/map_carmen.cpp)
@@ -20,7 +26,7 @@ target_link_libraries(doorplate_map_log doorplate_slam doorplate_maps opencv_cor
 install(TARGETS doorplate_map_log RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(name carmen_reader correlative_search tiled_grid scan_matcher motion_model trajectory_tree rbpf_slam rbpf_slam_options text_slam)
+  foreach(name carmen_reader correlative_search tiled_grid scan_matcher motion_model trajectory_tree rbpf_slam rbpf_slam_options text_slam pose_graph scan_icp slam_back_end)
     doorplate_add_core_test(${name}_test test/slam/${name}_test.cpp doorplate_slam)
   endforeach()
 endif()

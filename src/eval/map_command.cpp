@@ -68,6 +68,12 @@ void PrintSummary(const MapEvalResult& r, MapMethod method, std::uint64_t seed) 
               "error %.3f m; peak RSS %.0f MB\n",
               r.plates.plates_mapped, r.plates.plates_true, r.plates.plates_in_map, r.plate_reports_used,
               r.plate_reports, r.plates.rmse_m, r.plates.max_error_m, r.final_position_error_m, r.peak_rss_kb / 1024.0);
+  std::printf("  trajectory error (processed scans): RMSE %.3f m, max %.3f m\n", r.trajectory_rmse_m,
+              r.trajectory_max_error_m);
+  if (r.loop_closures > 0 || r.odometry_scale != 1.0) {
+    std::printf("  back end: odometry scale %.4f (true / odometry distance), %d loop closures\n", r.odometry_scale,
+                r.loop_closures);
+  }
 }
 
 }  // namespace
@@ -86,8 +92,12 @@ int RunMapCommand(const std::vector<std::string>& args, const std::string& comma
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("map: --method: ") + e.what());
   }
-  // Each method starts from its own defaults: the laser-only filter exactly as on the real logs.
-  if (options.method == MapMethod::kRbpf) options.slam.slam = RbpfSlamOptions{};
+  // Each method starts from its own defaults: the laser-only filter exactly as on the real logs (no
+  // back end); rbpf_text is TextSlamOptions' defaults (degeneracy-aware proposal, plates, back end).
+  if (options.method == MapMethod::kRbpf) {
+    options.slam.slam = RbpfSlamOptions{};
+    options.slam.back_end.enabled = false;
+  }
   options.seed = parsed.Unsigned("seed");
   options.slam.slam.num_particles = parsed.Integer("particles", 1);
   options.speed_mps = parsed.Number("speed-mps");

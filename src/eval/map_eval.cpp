@@ -3,6 +3,7 @@
 #include <sys/resource.h>
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <ctime>
 #include <memory>
@@ -91,6 +92,7 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
       const double t0 = ThreadCpuSeconds();
       if (slam.AddScan(ToRangeScan(scan, sim_world.sensors.laser), sim.odom_pose(), result.scans)) {
         ++result.scans_processed;
+        result.true_trajectory.push_back(result.world_from_map.Inverse().Compose(sim.true_pose()));
       }
       result.slam_seconds += ThreadCpuSeconds() - t0;
       ++result.scans;
@@ -120,10 +122,23 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
 
   result.grid = slam.BuildOccupancyGrid();
   result.text_map = slam.BuildTextMap();
-  for (const TrajectoryPoint& p : slam.slam().BestTrajectory()) result.trajectory.push_back(p.pose);
-  // The best particle's pose at the last processed scan vs the truth now: the odometry since then added.
+  result.trajectory = slam.Trajectory();
+  double sum2 = 0.0;
+  const std::size_t n = std::min(result.trajectory.size(), result.true_trajectory.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    const double e = Norm(result.trajectory[i].Position() - result.true_trajectory[i].Position());
+    sum2 += e * e;
+    result.trajectory_max_error_m = std::max(result.trajectory_max_error_m, e);
+  }
+  result.trajectory_rmse_m = n > 0 ? std::sqrt(sum2 / n) : 0.0;
+  if (const std::optional<SlamBackEndResult> back_end = slam.BackEndResult()) {
+    result.odometry_scale = back_end->odometry_scale;
+    result.loop_closures = back_end->loop_closures;
+  }
+  // The estimate at the last processed scan (back end, or best particle) vs the truth now: the odometry
+  // since then added.
   const Pose2D estimate_now =
-      slam.BestPose().Compose(slam.slam().LastProcessedOdometry().Between(sim.odom_pose()));
+      result.trajectory.back().Compose(slam.slam().LastProcessedOdometry().Between(sim.odom_pose()));
   result.final_position_error_m =
       Norm(result.world_from_map.Compose(estimate_now).Position() - sim.true_pose().Position());
   std::vector<Segment> walls;

@@ -53,10 +53,15 @@ struct MapEvalResult {
   int plate_reports_used = 0;
   PlateScore plates;
   Pose2D world_from_map;             // the map frame in the world: the start pose, odometry at the first scan
-  double final_position_error_m = 0.0;  // best particle's pose vs the true pose at the end
+  double final_position_error_m = 0.0;  // final estimate (back end, else best particle) vs the truth
+  double trajectory_rmse_m = 0.0;    // position error of `trajectory` against the truth, per processed scan
+  double trajectory_max_error_m = 0.0;
+  double odometry_scale = 1.0;       // back end's estimate of true ÷ odometry distance (1 if off)
+  int loop_closures = 0;             // back end's scan-alignment loop closures
   OccupancyGrid grid;
   TextMap text_map;                  // empty landmarks for method rbpf
-  std::vector<Pose2D> trajectory;    // best particle's history, map frame
+  std::vector<Pose2D> trajectory;    // TextSlam::Trajectory(): back end poses (else best particle's), map frame
+  std::vector<Pose2D> true_trajectory;  // true pose at each processed scan, map frame (same order)
 };
 
 // Throws std::invalid_argument for bad options, whatever the components throw for their options.

@@ -14,6 +14,50 @@ double Median(std::vector<double> v) {
   return v[mid];
 }
 
+// A wall's position from its cells' positions across it: the mean of the values within 0.15 m of their
+// median. The median alone jumps by a whole cell when a wall is mapped two cells thick (the wall surface
+// lies between them); the mean of the wall's own cells finds it, and the band keeps stray cells out.
+double WallPosition(const std::vector<double>& v) {
+  const double median = Median(v);
+  double sum = 0.0;
+  int count = 0;
+  for (double value : v) {
+    if (std::abs(value - median) <= 0.15) sum += value, ++count;
+  }
+  return count > 0 ? sum / count : median;
+}
+
+// A side wall as the line v = offset + slope · (u - mid_u) through its cells: least squares on the cells
+// within 0.15 m of their median, then once more on those within 0.15 m of that line.
+struct WallLine {
+  double offset = 0.0;
+  double slope = 0.0;
+};
+WallLine FitWallLine(const std::vector<std::pair<double, double>>& cells, double mid_u) {
+  WallLine line;
+  std::vector<double> v;
+  for (const auto& c : cells) v.push_back(c.second);
+  line.offset = Median(v);
+  for (int pass = 0; pass < 2; ++pass) {
+    double su = 0, sv = 0, suu = 0, suv = 0;
+    int count = 0;
+    for (const auto& [cu, cv] : cells) {
+      const double du = cu - mid_u;
+      if (std::abs(cv - (line.offset + line.slope * du)) > 0.15) continue;
+      su += du, sv += cv, suu += du * du, suv += du * cv, ++count;
+    }
+    if (count < 2) break;
+    const double det = count * suu - su * su;
+    if (std::abs(det) < 1e-12) {
+      line.offset = sv / count;
+      continue;
+    }
+    line.slope = (count * suv - su * sv) / det;
+    line.offset = (sv - line.slope * su) / count;
+  }
+  return line;
+}
+
 // Unit principal axis of a point set (eigenvector of the larger eigenvalue of the 2×2 covariance).
 Vec2 PrincipalAxis(const std::vector<Vec2>& points) {
   Vec2 mean;
@@ -52,11 +96,21 @@ CorridorExtent MeasureCorridor(const OccupancyGrid& grid, double end_band_m) {
     if (u[i] >= high - end_band_m) high_end.push_back(u[i]);
     if (u[i] > low + end_band_m && u[i] < high - end_band_m) inner_v.push_back(v[i]);
   }
-  extent.length_m = Median(high_end) - Median(low_end);
-  const double centre = Median(inner_v);
-  std::vector<double> below, above;
-  for (double value : inner_v) (value < centre ? below : above).push_back(value);
-  extent.width_m = Median(above) - Median(below);
+  extent.length_m = WallPosition(high_end) - WallPosition(low_end);
+  // The centre line halfway between the outermost cells (a median of all cells would sit on whichever
+  // wall has more cells); each side wall a line fitted to its cells, so that a wall mapped thicker at one
+  // end than at the other neither tilts nor shifts it.
+  std::vector<double> sorted_v = inner_v;
+  std::sort(sorted_v.begin(), sorted_v.end());
+  const double centre = sorted_v.empty() ? 0.0
+                                         : 0.5 * (sorted_v[sorted_v.size() / 20] + sorted_v[sorted_v.size() - 1 - sorted_v.size() / 20]);
+  std::vector<std::pair<double, double>> below, above;  // (u, v)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (u[i] > low + end_band_m && u[i] < high - end_band_m) (v[i] < centre ? below : above).emplace_back(u[i], v[i]);
+  }
+  const double mid_u = 0.5 * (low + high);
+  const WallLine lower = FitWallLine(below, mid_u), upper = FitWallLine(above, mid_u);
+  extent.width_m = (upper.offset - lower.offset) * std::cos(std::atan(0.5 * (upper.slope + lower.slope)));
   extent.ok = !below.empty() && !above.empty();
   return extent;
 }

@@ -13,11 +13,15 @@ namespace doorplate_localization {
 // Length and width of a straight corridor in its own grid, without ground truth. The corridor axis is the
 // principal axis of the occupied cells (u along it, v across). Length: between the two end walls, each
 // the median u of the occupied cells within `end_band_m` of that end (the end is the 0.5 % / 99.5 %
-// quantile of u, so a few stray cells do not move it). Width: between the two side walls, each the
-// median v of the occupied cells on that side of the corridor's centre line (cells within
-// `end_band_m` of either end left out); the centre line is the median v of all of them. Cell centres
-// are used; metres. ok = false if the grid has fewer than 20 occupied cells. Rooms behind open doors lie
-// beyond the side walls and swamp those medians: the width is then meaningless (docs/results/table2-map.md).
+// quantile of u, so a few stray cells do not move it), refined to the mean of its cells within 0.15 m of
+// that median (a wall mapped two cells thick has its surface between them; the median alone jumps by a
+// cell). Width: the centre line lies halfway between the 5 % and 95 % quantiles of v (cells within
+// `end_band_m` of either end left out); each side wall is a line v = a + b·u fitted to the cells on its side
+// (least squares on the cells within 0.15 m of their median, then of that line), and the width is the
+// distance between the two lines at the corridor's middle. So a wall mapped thicker at one end than at the
+// other neither tilts nor shifts it. Cell centres are used; metres. ok = false if the grid has fewer than
+// 20 occupied cells. Rooms behind open doors lie beyond the side walls and swamp those fits: the width is
+// then meaningless (docs/results/table2-map.md).
 struct CorridorExtent {
   bool ok = false;
   double length_m = 0.0;

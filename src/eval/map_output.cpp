@@ -1,6 +1,7 @@
 #include "map_output.h"
 
 #include <filesystem>
+#include <sstream>
 #include <stdexcept>
 
 #include <opencv2/imgcodecs.hpp>
@@ -44,6 +45,17 @@ void WriteMapOutputs(const MapEvalResult& result, const TextMap& truth, const st
     throw std::runtime_error((base / "map.png").string() + ": PNG encoding failed");
   }
   WriteFileAtomically((base / "map.png").string(), std::string(png.begin(), png.end()));
+  // One line per processed scan: the best particle's pose and the true pose, both in the map frame.
+  std::ostringstream traj;
+  traj << "# processed_scan est_x_m est_y_m est_theta_rad true_x_m true_y_m true_theta_rad (map frame)\n";
+  const std::size_t n = std::min(result.trajectory.size(), result.true_trajectory.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    const Pose2D& e = result.trajectory[i];
+    const Pose2D& t = result.true_trajectory[i];
+    traj << i << ' ' << e.x_m << ' ' << e.y_m << ' ' << e.theta_rad << ' ' << t.x_m << ' ' << t.y_m << ' '
+         << t.theta_rad << '\n';
+  }
+  WriteFileAtomically((base / "trajectory.txt").string(), traj.str());
 }
 
 }  // namespace doorplate_localization

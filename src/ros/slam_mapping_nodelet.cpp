@@ -151,12 +151,13 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     if (!processed) return;
     started_ = true;
     last_processed_odom_ = odom_pose;
-    map_to_odom_ = MapToOdom(slam_->BestPose(), odom_pose);
+    map_to_odom_ = MapToOdom(slam_->EstimatedPose(odom_pose), odom_pose);
     std_msgs::Float64 entropy;
     entropy.data = PoseEntropy(slam_->slam().particles());
     entropy_pub_.publish(entropy);
     if (last_map_update_.isZero() || (stamp - last_map_update_).toSec() >= options_.map_update_interval_s) {
       PublishMap(stamp);
+      map_to_odom_ = MapToOdom(slam_->EstimatedPose(odom_pose), odom_pose);  // the back end just solved
     }
   }
 
@@ -194,7 +195,7 @@ class SlamMappingNodelet : public nodelet::Nodelet {
       }
     }
     if (changed && started_) {
-      map_to_odom_ = MapToOdom(slam_->BestPose(), last_processed_odom_);  // the best particle may have changed
+      map_to_odom_ = MapToOdom(slam_->EstimatedPose(last_processed_odom_), last_processed_odom_);  // the best particle may have changed
       markers_pub_.publish(ToTextLandmarkMarkers(MapFrameTextMap(), options_.map_frame, stamp));
     }
   }

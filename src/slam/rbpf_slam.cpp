@@ -97,17 +97,22 @@ RbpfSlam::ScanPoints RbpfSlam::PrepareScan(const RangeScan& scan) const {
   return points;
 }
 
-void RbpfSlam::Integrate(SlamParticle& particle, const ScanPoints& points) const {
-  const Vec2 origin = particle.pose.TransformPoint(points.origin);
+void RbpfSlam::Integrate(TiledGrid& map, const Pose2D& pose, const ScanPoints& points) const {
+  const Vec2 origin = pose.TransformPoint(points.origin);
   // Beams with an echo first, so that a dropout between echoes of a wall not yet in the map stops at
   // the wall this very scan puts there.
   for (const auto& [end, kind] : points.integrate) {
     if (kind == ScanPoints::BeamEnd::kNoReturn) continue;
-    particle.map.IntegrateBeam(origin, particle.pose.TransformPoint(end), kind == ScanPoints::BeamEnd::kHit);
+    map.IntegrateBeam(origin, pose.TransformPoint(end), kind == ScanPoints::BeamEnd::kHit);
   }
   for (const auto& [end, kind] : points.integrate) {
-    if (kind == ScanPoints::BeamEnd::kNoReturn) particle.map.IntegrateNoReturnBeam(origin, particle.pose.TransformPoint(end));
+    if (kind == ScanPoints::BeamEnd::kNoReturn) map.IntegrateNoReturnBeam(origin, pose.TransformPoint(end));
   }
+}
+
+void RbpfSlam::IntegrateScanInto(TiledGrid* map, const RangeScan& scan, const Pose2D& pose) const {
+  ValidateScan(scan);
+  Integrate(*map, pose, PrepareScan(scan));
 }
 
 bool RbpfSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index) {
@@ -116,7 +121,7 @@ bool RbpfSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int s
   if (!started_) {
     const ScanPoints points = PrepareScan(scan);
     SlamParticle first{odometry_pose, 0.0, 0.0, TiledGrid(options_.grid), nullptr, nullptr};
-    Integrate(first, points);
+    Integrate(first.map, first.pose, points);
     first.trajectory = ExtendTrajectory(nullptr, {scan_index, odometry_pose});
     particles_.assign(options_.num_particles, first);
     started_ = true;
@@ -292,7 +297,7 @@ void RbpfSlam::FinishStep(const ScanPoints* scan, int scan_index) {
       if (done[parent]) continue;
       done[parent] = true;
       SlamParticle& p = particles_[parent];
-      Integrate(p, *scan);
+      Integrate(p.map, p.pose, *scan);
       p.trajectory = ExtendTrajectory(p.trajectory, {scan_index, p.pose});
     }
   }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace doorplate_localization {
 namespace {
@@ -64,9 +65,12 @@ const Field& Find(const std::string& name) {
 }
 
 using T = TextSlamOptions;
+// A text SLAM option: a double, a whole number or a flag (0 / 1).
 struct TextField {
   const char* name;
   double* (*real)(TextSlamOptions&);
+  int* (*whole)(TextSlamOptions&) = nullptr;
+  bool* (*flag)(TextSlamOptions&) = nullptr;
 };
 const TextField kTextFields[] = {
     {"text.min_confidence", [](T& o) { return &o.min_confidence; }},
@@ -77,6 +81,23 @@ const TextField kTextFields[] = {
     {"text.association_radius_m", [](T& o) { return &o.association_radius_m; }},
     {"text.text_likelihood_gain", [](T& o) { return &o.text_likelihood_gain; }},
     {"text.max_odometry_gap_m", [](T& o) { return &o.max_odometry_gap_m; }},
+    {"back_end.enabled", nullptr, nullptr, [](T& o) { return &o.back_end.enabled; }},
+    {"back_end.max_sequential_offset", nullptr, [](T& o) { return &o.back_end.max_sequential_offset; }},
+    {"back_end.max_alignment_distance_m", [](T& o) { return &o.back_end.max_alignment_distance_m; }},
+    {"back_end.loop_closure_radius_m", [](T& o) { return &o.back_end.loop_closure_radius_m; }},
+    {"back_end.loop_closure_min_separation", nullptr, [](T& o) { return &o.back_end.loop_closure_min_separation; }},
+    {"back_end.loop_closure_max_rms_m", [](T& o) { return &o.back_end.loop_closure_max_rms_m; }},
+    {"back_end.odometry_trans_m2_per_m", [](T& o) { return &o.back_end.odometry_trans_m2_per_m; }},
+    {"back_end.odometry_trans_m2_per_rad", [](T& o) { return &o.back_end.odometry_trans_m2_per_rad; }},
+    {"back_end.odometry_rot_rad2_per_m", [](T& o) { return &o.back_end.odometry_rot_rad2_per_m; }},
+    {"back_end.odometry_rot_rad2_per_rad", [](T& o) { return &o.back_end.odometry_rot_rad2_per_rad; }},
+    {"back_end.icp.point_sigma_m", [](T& o) { return &o.back_end.icp.point_sigma_m; }},
+    {"back_end.icp.effective_points", [](T& o) { return &o.back_end.icp.effective_points; }},
+    {"back_end.icp.min_inlier_fraction", [](T& o) { return &o.back_end.icp.min_inlier_fraction; }},
+    {"back_end.icp.normal_neighbours", nullptr, [](T& o) { return &o.back_end.icp.normal_neighbours; }},
+    {"back_end.icp.normal_gap_per_m", [](T& o) { return &o.back_end.icp.normal_gap_per_m; }},
+    {"back_end.graph.scale_prior_sigma", [](T& o) { return &o.back_end.graph.scale_prior_sigma; }},
+    {"back_end.graph.estimate_odometry_scale", nullptr, nullptr, [](T& o) { return &o.back_end.graph.estimate_odometry_scale; }},
 };
 
 const TextField* FindText(const std::string& name) {
@@ -96,7 +117,19 @@ std::vector<std::string> TextSlamOptionNames() {
 
 void SetTextSlamOption(const std::string& name, double value, TextSlamOptions* options) {
   if (const TextField* f = FindText(name)) {
-    *f->real(*options) = value;
+    if (f->real) {
+      *f->real(*options) = value;
+    } else if (f->whole) {
+      if (value != std::floor(value) || std::abs(value) > 1e9) {
+        throw std::invalid_argument("SLAM option '" + name + "' must be a whole number, got " + std::to_string(value));
+      }
+      *f->whole(*options) = static_cast<int>(value);
+    } else {
+      if (value != 0.0 && value != 1.0) {
+        throw std::invalid_argument("SLAM option '" + name + "' must be 0 or 1, got " + std::to_string(value));
+      }
+      *f->flag(*options) = value == 1.0;
+    }
     return;
   }
   SetRbpfSlamOption(name, value, &options->slam);
@@ -105,7 +138,9 @@ void SetTextSlamOption(const std::string& name, double value, TextSlamOptions* o
 double GetTextSlamOption(const std::string& name, const TextSlamOptions& options) {
   if (const TextField* f = FindText(name)) {
     TextSlamOptions copy = options;
-    return *f->real(copy);
+    if (f->real) return *f->real(copy);
+    if (f->whole) return *f->whole(copy);
+    return *f->flag(copy) ? 1.0 : 0.0;
   }
   return GetRbpfSlamOption(name, options.slam);
 }

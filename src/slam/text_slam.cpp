@@ -48,12 +48,41 @@ RbpfSlamOptions DefaultTextSlamLaserOptions() {
   return options;
 }
 
-TextSlam::TextSlam(const TextSlamOptions& options) : options_(Validated(options)), slam_(options.slam) {}
+static SlamBackEndOptions BackEndOptions(const TextSlamOptions& o) {
+  SlamBackEndOptions b = o.back_end;
+  b.plate_sigma_m = o.plate_sigma_m;
+  return b;
+}
+
+TextSlam::TextSlam(const TextSlamOptions& options)
+    : options_(Validated(options)), slam_(options.slam), back_end_(BackEndOptions(options)) {}
 
 bool TextSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index) {
   const bool processed = slam_.AddScan(scan, odometry_pose, scan_index);
   last_scan_ = scan;
+  if (processed && options_.back_end.enabled) {
+    back_end_.AddNode(slam_.MatchPoints(scan), odometry_pose, slam_.BestParticle().pose);
+    node_scans_.push_back(scan);
+  }
   return processed;
+}
+
+std::optional<SlamBackEndResult> TextSlam::BackEndResult() const {
+  if (!options_.back_end.enabled || back_end_.num_nodes() == 0) return std::nullopt;
+  if (!back_end_result_ || back_end_result_nodes_ != back_end_.num_nodes() || back_end_result_readings_ != plate_readings_) {
+    back_end_result_ = back_end_.Optimize();
+    back_end_result_nodes_ = back_end_.num_nodes();
+    back_end_result_readings_ = plate_readings_;
+  }
+  return back_end_result_;
+}
+
+std::vector<Pose2D> TextSlam::Trajectory() const {
+  if (const std::optional<SlamBackEndResult> r = BackEndResult()) return r->poses;
+  std::vector<Pose2D> poses;
+  if (!slam_.started()) return poses;
+  for (const TrajectoryPoint& p : slam_.BestTrajectory()) poses.push_back(p.pose);
+  return poses;
 }
 
 std::optional<double> TextSlam::RangeFromLastScan(double bearing_rad) const {
@@ -159,6 +188,10 @@ TextSlamPlateResult TextSlam::AddPlate(const PlateSighting& sighting, const Pose
     *handle = std::move(next);
     return log_likelihood;
   });
+  if (options_.back_end.enabled && back_end_.num_nodes() > 0) {
+    back_end_.AddPlateReading(id, back_end_.num_nodes() - 1, since_scan.TransformPoint(local));
+    ++plate_readings_;
+  }
   result.outcome = is_new ? PlateOutcome::kNewLandmark : PlateOutcome::kReobserved;
   result.landmark_index = id;
   result.reason = is_new ? "new landmark" : "re-observed landmark";
@@ -167,17 +200,36 @@ TextSlamPlateResult TextSlam::AddPlate(const PlateSighting& sighting, const Pose
 
 Pose2D TextSlam::BestPose() const { return slam_.BestParticle().pose; }
 
+Pose2D TextSlam::EstimatedPose(const Pose2D& odometry_pose) const {
+  if (back_end_result_ && !back_end_result_->poses.empty()) {
+    const int node = static_cast<int>(back_end_result_->poses.size()) - 1;
+    return back_end_result_->poses.back().Compose(back_end_.NodeOdometry(node).Between(odometry_pose));
+  }
+  return BestPose().Compose(slam_.LastProcessedOdometry().Between(odometry_pose));
+}
+
 std::vector<SlamLandmark> TextSlam::BestLandmarks() const {
   if (!slam_.started()) return {};
   const SlamLandmarksHandle& h = slam_.BestParticle().landmarks;
   std::vector<SlamLandmark> list = h ? *h : SlamLandmarks{};
+  if (const std::optional<SlamBackEndResult> r = BackEndResult()) {
+    for (SlamLandmark& l : list) {
+      if (l.id < static_cast<int>(r->plates.size()) && r->plates[l.id]) l.position = *r->plates[l.id];
+    }
+  }
   std::sort(list.begin(), list.end(), [](const SlamLandmark& a, const SlamLandmark& b) { return a.id < b.id; });
   return list;
 }
 
 OccupancyGrid TextSlam::BuildOccupancyGrid() const {
   if (!slam_.started()) throw std::logic_error("TextSlam::BuildOccupancyGrid: no scan was added yet");
-  return slam_.BestParticle().map.ToOccupancyGrid();
+  const std::optional<SlamBackEndResult> r = BackEndResult();
+  if (!r) return slam_.BestParticle().map.ToOccupancyGrid();
+  TiledGrid grid(options_.slam.grid);
+  for (std::size_t i = 0; i < node_scans_.size() && i < r->poses.size(); ++i) {
+    slam_.IntegrateScanInto(&grid, node_scans_[i], r->poses[i]);
+  }
+  return grid.ToOccupancyGrid();
 }
 
 }  // namespace doorplate_localization

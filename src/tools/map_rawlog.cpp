@@ -157,6 +157,15 @@ int Run(const Args& args) {
               clock.Seconds(), tools::PeakRssMb());
   std::printf("final pose (best particle, end of the log): %.4f %.4f %.2f deg\n", best.x_m, best.y_m,
               best.theta_rad * 180.0 / M_PI);
+  if (slam.BackEndResult()) {  // solved by BuildOccupancyGrid above; reported, not what --expect checks
+    const dl::Pose2D graph = slam.EstimatedPose(odometry);
+    std::printf("final pose (pose-graph back end, end of the log): %.4f %.4f %.2f deg", graph.x_m, graph.y_m,
+                graph.theta_rad * 180.0 / M_PI);
+    if (args.has_expected) std::printf(", |log| to the expected pose %.3f", LogNorm(args.expected, graph));
+    const dl::SlamBackEndResult r = *slam.BackEndResult();
+    std::printf(" (%d nodes, %d alignments, %d loop closures, odometry scale %.4f)\n", static_cast<int>(r.poses.size()),
+                r.alignment_edges, r.loop_closures, r.odometry_scale);
+  }
   std::printf("odometry alone at the end of the log: %.4f %.4f %.2f deg\n", odometry.x_m, odometry.y_m,
               odometry.theta_rad * 180.0 / M_PI);
   if (!args.has_expected) return 0;

@@ -38,6 +38,44 @@ TEST(MeasureCorridor, IgnoresAFewStrayCellsBeyondTheEndWall) {
   EXPECT_NEAR(e.length_m, 20.0, 0.05);
 }
 
+// Walls whose surfaces lie on cell boundaries (y = 0 and 1.90 m) get mapped two cells thick, in uneven
+// shares: the median of each wall's cells picks one row (the inner rows are 1.85 m apart), the mean of the
+// wall's cells lies between its rows.
+TEST(MeasureCorridor, PlacesAWallMappedTwoCellsThickBetweenItsCells) {
+  OccupancyGrid grid(static_cast<int>(24.0 / 0.05), static_cast<int>(4.0 / 0.05), 0.05, {-2.0, -1.0, 0.0},
+                     OccupancyGrid::kFree);
+  const auto mark = [&](double x, double y) {
+    int cx, cy;
+    if (grid.WorldToCell({x, y}, &cx, &cy)) grid.At(cx, cy) = OccupancyGrid::kOccupied;
+  };
+  for (int i = 0; i < 400; ++i) {  // x from 0 to 20 m, one cell each
+    const double x = 0.025 + 0.05 * i;
+    const bool inner = i % 20 < 11;  // 55 % of the columns in the inner row
+    mark(x, inner ? 0.025 : -0.025);  // south wall: cells centred 0.025 (inner) or -0.025
+    mark(x, inner ? 1.875 : 1.925);   // north wall: cells centred 1.875 (inner) or 1.925
+  }
+  for (double y = 0.0; y <= 1.85; y += 0.05) mark(-0.05, y), mark(20.05, y);
+  const CorridorExtent e = MeasureCorridor(grid);
+  ASSERT_TRUE(e.ok);
+  EXPECT_NEAR(e.width_m, 1.90, 0.015);
+}
+
+// The south wall mapped two cells thick along the first half only, the north wall along the second half
+// only: the cells' principal axis tilts and a median of all cells would sit on the south wall. The fitted
+// walls are still 1.85 m apart (inner faces at cell centres 0 and 1.85 m; outer rows 5 cm further out).
+TEST(MeasureCorridor, WallsMappedThickerAtOppositeEndsKeepTheirWidth) {
+  OccupancyGrid grid = DrawnCorridor(40.0, 1.85);
+  const auto mark = [&](double x, double y) {
+    int cx, cy;
+    if (grid.WorldToCell({x, y}, &cx, &cy)) grid.At(cx, cy) = OccupancyGrid::kOccupied;
+  };
+  for (double x = 0.0; x <= 40.0; x += 0.025) (x < 20.0 ? mark(x, -0.04) : mark(x, 1.85 + 0.06));
+  const CorridorExtent e = MeasureCorridor(grid);
+  ASSERT_TRUE(e.ok);
+  EXPECT_NEAR(e.width_m, 1.85 + 0.05, 0.03);
+  EXPECT_NEAR(e.length_m, 40.0, 0.05);
+}
+
 TEST(MeasureCorridor, AnEmptyGridIsNotMeasured) {
   EXPECT_FALSE(MeasureCorridor(OccupancyGrid(10, 10, 0.05, {}, OccupancyGrid::kFree)).ok);
 }

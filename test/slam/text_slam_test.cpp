@@ -144,6 +144,44 @@ TEST(TextSlam, ReobservingAPlateFavoursTheParticlesThatPutItBackInPlace) {
   EXPECT_LT(std::abs(with_text), 0.5 * std::abs(without_text));
 }
 
+// A 40 m corridor with end walls, driven with odometry 2 % long, a plate read half-way on the left wall.
+// The map, the plates and the trajectory all come from the back end's solve, and the pose after it agrees
+// with that solve.
+TEST(TextSlam, MapPlatesAndTrajectoryComeFromTheBackEndSolve) {
+  const std::vector<Segment> walls = {{{-0.525, -1.025}, {40.525, -1.025}}, {{-0.525, 1.025}, {40.525, 1.025}},
+                                      {{-0.525, -1.025}, {-0.525, 1.025}}, {{40.525, -1.025}, {40.525, 1.025}}};
+  TextSlam slam(FewParticles(10));
+  int index = 0;
+  for (const Pose2D& truth : test::PosesAlongX(0.0, 40.0, 0.5)) {
+    const Pose2D odometry{1.02 * truth.x_m, 0.0, 0.0};
+    ASSERT_TRUE(slam.AddScan(test::Scan(walls, truth, 360, 16.0), odometry, index++));
+    if (truth.x_m == 20.0) {
+      ASSERT_TRUE(slam.AddPlate(Sighting("120", M_PI / 2, 1.025), odometry).used());
+    }
+  }
+  const OccupancyGrid grid = slam.BuildOccupancyGrid();
+  const std::optional<SlamBackEndResult> solve = slam.BackEndResult();
+  ASSERT_TRUE(solve.has_value());
+  ASSERT_EQ(solve->poses.size(), 81u);
+  const std::vector<Pose2D> trajectory = slam.Trajectory();
+  ASSERT_EQ(trajectory.size(), solve->poses.size());
+  EXPECT_EQ(trajectory.back().x_m, solve->poses.back().x_m);
+  EXPECT_NEAR(trajectory.back().x_m, 40.0, 0.15);
+  EXPECT_NEAR(solve->odometry_scale, 1 / 1.02, 0.005);
+  const std::vector<SlamLandmark> plates = slam.BestLandmarks();
+  ASSERT_EQ(plates.size(), 1u);
+  ASSERT_TRUE(solve->plates.at(0).has_value());
+  EXPECT_EQ(plates[0].position.x, solve->plates[0]->x);
+  EXPECT_NEAR(plates[0].position.x, 20.0, 0.15);
+  EXPECT_NEAR(plates[0].position.y, 1.025, 0.05);
+  // The far end wall is rendered where it is (40.525 m), not 2 % further out.
+  int cx = 0, cy = 0;
+  ASSERT_TRUE(grid.WorldToCell({40.525, 0.0}, &cx, &cy));
+  EXPECT_EQ(grid.At(cx, cy), OccupancyGrid::kOccupied);
+  const Pose2D after = slam.EstimatedPose({1.02 * 40.0 + 0.2, 0.0, 0.0});
+  EXPECT_NEAR(after.x_m, solve->poses.back().x_m + 0.2, 1e-6);
+}
+
 TEST(TextSlam, TheTextMapListsPlatesByWallWithDistancesFromTheMapAndFromOdometry) {
   TextSlam slam(FewParticles(3));
   slam.AddScan(test::Scan(test::Corridor(), {0, 0, 0}), {0, 0, 0}, 0);

@@ -108,6 +108,11 @@ class RbpfSlam {
   // pose o is particle.pose ⊕ (LastProcessedOdometry()⁻¹ ⊕ o).
   const Pose2D& LastProcessedOdometry() const { return last_odometry_; }
   const RbpfSlamOptions& options() const { return options_; }
+  // Adds `scan` taken at `pose` (base_link in the map frame) to `map` by the filter's own beam rules
+  // (echoes, cut beams, no-echo beams; docs/slam.md "Ranges"): how a back end re-renders a trajectory.
+  void IntegrateScanInto(TiledGrid* map, const RangeScan& scan, const Pose2D& pose) const;
+  // The scan's echoes used for matching (at most max_match_points, evenly subsampled), in base_link.
+  std::vector<Vec2> MatchPoints(const RangeScan& scan) const { return PrepareScan(scan).match; }
 
  private:
   struct ScanPoints {
@@ -121,7 +126,7 @@ class RbpfSlam {
   };
   ScanPoints PrepareScan(const RangeScan& scan) const;
   int BestIndex() const;
-  void Integrate(SlamParticle& particle, const ScanPoints& points) const;
+  void Integrate(TiledGrid& map, const Pose2D& pose, const ScanPoints& points) const;
   // Resamples if Neff is low; then, if `scan` is given, adds it to every particle's map (once per
   // distinct parent) and appends the pose to the trajectories.
   void FinishStep(const ScanPoints* scan, int scan_index);

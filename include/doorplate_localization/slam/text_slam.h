@@ -18,6 +18,7 @@
 #include "doorplate_localization/maps/occupancy_grid.h"
 #include "doorplate_localization/maps/text_map.h"
 #include "doorplate_localization/slam/rbpf_slam.h"
+#include "doorplate_localization/slam/slam_back_end.h"
 
 namespace doorplate_localization {
 
@@ -35,6 +36,9 @@ struct TextSlamOptions {
   double association_radius_m = 3.0;    // a same-text reading this close to a particle's landmark re-observes it
   double text_likelihood_gain = 1.0;    // multiplies the re-observation log-likelihood
   double max_odometry_gap_m = 2.0;      // readings further (odometry) from the last processed scan are ignored
+  // The pose-graph back end (slam_back_end.h): when enabled, the map, the plates and Trajectory() come
+  // from the optimized graph instead of the best particle. Its plate_sigma_m is set from the field above.
+  SlamBackEndOptions back_end;
 };
 
 // One doorplate reading, made at the time of the odometry pose passed with it.
@@ -76,15 +80,25 @@ class TextSlam {
   // ("PlateSighting.bearing_rad ...") for NaN or out-of-range fields or an empty text.
   TextSlamPlateResult AddPlate(const PlateSighting& sighting, const Pose2D& odometry_pose);
 
-  // The best particle's map (map_server-ready: -1 unknown, 0 free, 100 occupied).
+  // The map (map_server-ready: -1 unknown, 0 free, 100 occupied): every processed scan rendered at the
+  // back end's optimized poses, or the best particle's map when the back end is off.
   OccupancyGrid BuildOccupancyGrid() const;
+  // base_link in the map frame at every processed scan: the back end's optimized poses, or the best
+  // particle's history when the back end is off.
+  std::vector<Pose2D> Trajectory() const;
+  // The back end's last solve (recomputed when scans or plates were added since), unset when it is off.
+  std::optional<SlamBackEndResult> BackEndResult() const;
   // The best particle's landmarks (index = landmark id order) with adjacent distances from the map
   // (eq. 13, source "map") and from odometry (source "odometry"). Walls are labelled "wall0", "wall1",
   // ...: plates facing the same way (within 30°) on the same line (within 0.5 m across it) share one.
   TextMap BuildTextMap() const;
   // base_link in the map frame, best particle, at the last processed scan.
   Pose2D BestPose() const;
-  // The best particle's landmarks, in id order.
+  // base_link in the map frame at `odometry_pose` (base_link in odom, at or after the last processed
+  // scan): the back end's last solve (its newest node ⊕ the odometry since) when there is one, so that the
+  // pose agrees with the map last built; else the best particle's pose ⊕ the odometry since. Never solves.
+  Pose2D EstimatedPose(const Pose2D& odometry_pose) const;
+  // The best particle's landmarks, in id order; positions from the back end when it is on.
   std::vector<SlamLandmark> BestLandmarks() const;
   const RbpfSlam& slam() const { return slam_; }
   const TextSlamOptions& options() const { return options_; }
@@ -96,6 +110,11 @@ class TextSlam {
   const TextSlamOptions options_;
   RbpfSlam slam_;
   std::optional<RangeScan> last_scan_;  // the last scan fed (ranges for readings without one)
+  SlamBackEnd back_end_;
+  std::vector<RangeScan> node_scans_;   // the processed scans, for re-rendering (back end on)
+  int plate_readings_ = 0;              // readings given to the back end
+  mutable std::optional<SlamBackEndResult> back_end_result_;
+  mutable int back_end_result_nodes_ = -1, back_end_result_readings_ = -1;
   int next_landmark_id_ = 0;
   // eq. 13 by odometry: per landmark id, the plate's position in the odometry frame at its first reading.
   std::vector<Vec2> first_reading_in_odom_;

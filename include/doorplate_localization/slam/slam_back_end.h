@@ -1,0 +1,106 @@
+// The pose-graph back end of text SLAM: the particle filter (rbpf_slam.h) is the front end that runs
+// live; at the end (and whenever a map is asked for) this graph re-estimates the whole trajectory and
+// the plates, and the map is rendered again from it (the split of Cartographer and of Grisetti et al.'s
+// graph-SLAM tutorial).
+//
+// Graph (pose_graph.h): one node per processed scan; edges
+//  - odometry between consecutive nodes, translation times one unknown odometry scale factor; its
+//    noise grows with the distance driven and the angle turned (the filter's motion model);
+//  - scan alignment (point-to-line ICP, scan_icp.h) from each node to the nodes 1, 2, 4, ... back, within
+//    `max_sequential_offset`: their information says what the laser fixes (nothing along a featureless
+//    corridor, everything near an end wall), so odometry fills in exactly where the laser cannot;
+//  - loop closures: after a first solve, each node is aligned with the nearest node at least
+//    `loop_closure_min_separation` nodes away within `loop_closure_radius_m` (Huber kernel);
+//  - doorplates: each reading is the plate's position in its node's frame (bearing and range, σ
+//    `plate_sigma_m`); a plate read twice is a loop closure, and the odometry edges between the nodes
+//    where adjacent plates were read are the paper's inter-plate distances (eq. 13; eq. 14's sum is
+//    the chain of them).
+// Frames: map frame = the first node's frame as the filter set it; node points are in base_link.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "doorplate_localization/common/geometry2d.h"
+#include "doorplate_localization/slam/pose_graph.h"
+#include "doorplate_localization/slam/scan_icp.h"
+
+namespace doorplate_localization {
+
+struct SlamBackEndOptions {
+  bool enabled = true;
+  int max_sequential_offset = 8;             // align each node with nodes 1, 2, 4, ... up to this back
+  double max_alignment_distance_m = 8.0;     // pairs further apart (by odometry) are not aligned
+  double loop_closure_radius_m = 1.5;
+  int loop_closure_min_separation = 20;      // nodes apart in sequence to count as a loop closure
+  double loop_closure_max_rms_m = 0.05;      // alignments worse than this are not used
+  // Odometry noise (1σ) of one step: translation σ² = trans_m2_per_m · d + trans_m2_per_rad · |Δθ|,
+  // heading σ² = rot_rad2_per_m · d + rot_rad2_per_rad · |Δθ|, plus the floor below.
+  double odometry_trans_m2_per_m = 0.001;
+  double odometry_trans_m2_per_rad = 0.0004;
+  double odometry_rot_rad2_per_m = 0.0004;
+  double odometry_rot_rad2_per_rad = 0.004;
+  double odometry_min_sigma_m = 0.005;
+  double odometry_min_sigma_rad = 0.005;
+  double plate_sigma_m = 0.15;
+  ScanIcpOptions icp;
+  PoseGraphOptions graph;
+};
+
+struct SlamBackEndResult {
+  std::vector<Pose2D> poses;                // per node, map frame
+  std::vector<std::optional<Vec2>> plates;  // per plate id, map frame (unset: never read)
+  double odometry_scale = 1.0;              // estimated true distance ÷ odometry distance
+  int alignment_edges = 0;
+  int loop_closures = 0;
+  int plate_readings = 0;
+  PoseGraphSummary summary;                 // of the final solve
+};
+
+class SlamBackEnd {
+ public:
+  // Throws std::invalid_argument naming the field if an option is out of range.
+  explicit SlamBackEnd(const SlamBackEndOptions& options);
+
+  // One processed scan: its echoes in base_link (beam order), the odometry pose (base_link in odom) and
+  // the front end's estimate (base_link in map), used as the starting point.
+  void AddNode(std::vector<Vec2> points, const Pose2D& odometry_pose, const Pose2D& front_end_pose);
+  // A plate reading: the plate's position in the frame of node `node` (0-based, < num_nodes()).
+  void AddPlateReading(int plate_id, int node, const Vec2& in_node_frame);
+
+  // Builds and solves the graph (sequential alignments are computed once per node and kept).
+  SlamBackEndResult Optimize() const;
+  int num_nodes() const { return static_cast<int>(nodes_.size()); }
+  // The odometry pose given with node `node` (0-based, < num_nodes()).
+  const Pose2D& NodeOdometry(int node) const { return nodes_.at(node).odometry; }
+  const SlamBackEndOptions& options() const { return options_; }
+
+ private:
+  struct Node {
+    std::vector<Vec2> points;
+    Pose2D odometry;
+    Pose2D front_end;
+    std::optional<IcpReference> reference;  // built on first use
+  };
+  struct PlateReading {
+    int plate_id;
+    int node;
+    Vec2 in_node_frame;
+  };
+  const IcpReference& Reference(int node) const;
+  PoseEdge OdometryEdge(int from, int to) const;
+  std::optional<PoseEdge> Align(int from, int to, const Pose2D& initial, bool loop_closure) const;
+
+  const SlamBackEndOptions options_;
+  mutable std::vector<Node> nodes_;
+  std::vector<PlateReading> plates_;
+  mutable std::vector<PoseEdge> sequential_edges_;  // cached alignments
+  mutable int sequential_done_ = 0;                  // nodes whose sequential alignments are cached
+  // Loop-closure alignments tried, by (from, to): a pair found again in a later solve is not re-aligned
+  // (the relative guess changes little between solves; unset = the alignment failed).
+  mutable std::map<std::pair<int, int>, std::optional<PoseEdge>> loop_closure_cache_;
+};
+
+}  // namespace doorplate_localization

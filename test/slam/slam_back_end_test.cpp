@@ -1,0 +1,173 @@
+#include "doorplate_localization/slam/slam_back_end.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "slam_test_worlds.h"
+
+namespace doorplate_localization {
+namespace {
+
+constexpr int kBeams = 180;
+constexpr double kMaxRangeM = 16.0;
+
+std::vector<Vec2> PointsAt(const std::vector<Segment>& walls, const Pose2D& pose) {
+  return test::Points(test::Scan(walls, pose, kBeams, kMaxRangeM));
+}
+
+// A 2 m wide, 40 m long corridor along x (0 to 40 m), closed at both ends.
+std::vector<Segment> Corridor40() {
+  return {{{-0.025, -1.025}, {40.025, -1.025}}, {{-0.025, 1.025}, {40.025, 1.025}},
+          {{-0.025, -1.025}, {-0.025, 1.025}}, {{40.025, -1.025}, {40.025, 1.025}}};
+}
+
+// A straight run down Corridor40 from x = 1 m to 39 m, a node every 0.5 m, whose odometry measures
+// every distance 2% too long; the front end is fed the odometry. Returns the true poses.
+std::vector<Pose2D> FeedLongOdometryRun(SlamBackEnd& back_end) {
+  std::vector<Pose2D> truth;
+  for (double x = 1.0; x <= 39.0 + 1e-9; x += 0.5) truth.push_back({x, 0, 0});
+  for (const Pose2D& pose : truth) {
+    const Pose2D odometry{1.0 + 1.02 * (pose.x_m - 1.0), 0, 0};
+    back_end.AddNode(PointsAt(Corridor40(), pose), odometry, odometry);
+  }
+  return truth;
+}
+
+TEST(SlamBackEnd, ACorridorRunWithTooLongOdometryIsRescaledByTheEndWalls) {
+  SlamBackEnd back_end{SlamBackEndOptions{}};
+  const std::vector<Pose2D> truth = FeedLongOdometryRun(back_end);
+  ASSERT_EQ(back_end.num_nodes(), 77);
+  const SlamBackEndResult result = back_end.Optimize();
+  ASSERT_EQ(result.poses.size(), truth.size());
+  EXPECT_TRUE(result.summary.solver_ok);
+  EXPECT_GE(result.alignment_edges, 76 + 75);  // at least offsets 1 and 2 everywhere
+  EXPECT_EQ(result.loop_closures, 0);         // a straight run never comes back
+  EXPECT_NEAR(result.odometry_scale, 1.0 / 1.02, 0.005);
+  const double error_m = std::abs(result.poses.back().x_m - truth.back().x_m);
+  EXPECT_LT(error_m, 0.15);  // dead reckoning: 0.76 m
+  for (const Pose2D& pose : result.poses) EXPECT_NEAR(pose.y_m, 0.0, 0.02);
+
+  SlamBackEndOptions fixed_scale;
+  fixed_scale.graph.estimate_odometry_scale = false;
+  SlamBackEnd without_scale(fixed_scale);
+  FeedLongOdometryRun(without_scale);
+  const SlamBackEndResult unscaled = without_scale.Optimize();
+  EXPECT_NEAR(unscaled.odometry_scale, 1.0, 1e-6);
+  const double unscaled_error_m = std::abs(unscaled.poses.back().x_m - truth.back().x_m);
+  EXPECT_GT(unscaled_error_m, 0.15);
+  EXPECT_GT(unscaled_error_m, 2 * error_m);
+}
+
+// A few nodes turning on the spot and driving in the 6 m × 4 m room, with exact odometry.
+std::vector<Pose2D> RoomRun() { return {{0, 0, 0}, {0.3, 0, M_PI / 4}, {0.6, 0.1, M_PI / 2}, {0.6, -0.4, M_PI}}; }
+
+TEST(SlamBackEnd, APlateReadFromTwoNodesBecomesOneLandmarkAtItsPlace) {
+  SlamBackEnd back_end{SlamBackEndOptions{}};
+  const std::vector<Pose2D> truth = RoomRun();
+  for (const Pose2D& pose : truth) back_end.AddNode(PointsAt(test::Room(), pose), pose, pose);
+  const Vec2 plate{-3.0, 0.5};  // on the west wall
+  back_end.AddPlateReading(2, 0, truth[0].Inverse().TransformPoint(plate));
+  back_end.AddPlateReading(2, 3, truth[3].Inverse().TransformPoint(plate));
+
+  const SlamBackEndResult result = back_end.Optimize();
+  EXPECT_EQ(result.plate_readings, 2);
+  ASSERT_EQ(result.plates.size(), 3u);  // indexed by plate id
+  EXPECT_FALSE(result.plates[0].has_value());
+  EXPECT_FALSE(result.plates[1].has_value());
+  ASSERT_TRUE(result.plates[2].has_value());
+  EXPECT_NEAR(result.plates[2]->x, plate.x, 0.02);
+  EXPECT_NEAR(result.plates[2]->y, plate.y, 0.02);
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    EXPECT_LT(Norm(result.poses[i].Position() - truth[i].Position()), 0.02) << "node " << i;
+  }
+}
+
+// Two nodes 1 m apart in the featureless corridor (the laser fixes only y and heading), whose noisy
+// odometry says 1.3 m; a plate on the left wall at x = 0.5 m read from `readers` of them.
+SlamBackEndResult DriftedPairReading(const std::vector<int>& readers) {
+  SlamBackEndOptions options;
+  options.odometry_trans_m2_per_m = 0.1;  // σ ≈ 0.36 m over 1.3 m, the readings' 5 cm far surer
+  options.plate_sigma_m = 0.05;
+  options.graph.estimate_odometry_scale = false;
+  SlamBackEnd back_end(options);
+  const std::vector<Pose2D> truth = {{0, 0, 0}, {1, 0, 0}}, odometry = {{0, 0, 0}, {1.3, 0, 0}};
+  for (int i = 0; i < 2; ++i) back_end.AddNode(PointsAt(test::Corridor(), truth[i]), odometry[i], odometry[i]);
+  const Vec2 plate{0.5, 1};
+  for (int i : readers) back_end.AddPlateReading(0, i, truth[i].Inverse().TransformPoint(plate));
+  return back_end.Optimize();
+}
+
+TEST(SlamBackEnd, TwoReadingsOfAPlatePullADriftedOdometryTogether) {
+  const SlamBackEndResult both = DriftedPairReading({1, 0});  // the first reading starts the landmark off
+  EXPECT_EQ(both.alignment_edges, 1);
+  ASSERT_EQ(both.plates.size(), 1u);
+  ASSERT_TRUE(both.plates[0].has_value());
+  EXPECT_NEAR(both.poses[1].x_m, 1.0, 0.03);  // information 200 (plates) against 7.7 (odometry)
+  EXPECT_NEAR(both.poses[1].y_m, 0.0, 0.01);
+  EXPECT_LT(Norm(*both.plates[0] - Vec2{0.5, 1}), 0.03);
+  // Read once, the plate says nothing about node 1, which stays where the odometry put it.
+  EXPECT_NEAR(DriftedPairReading({0}).poses[1].x_m, 1.3, 0.01);
+}
+
+TEST(SlamBackEnd, APlateReadingAtANodeThatDoesNotExistThrows) {
+  SlamBackEnd back_end{SlamBackEndOptions{}};
+  EXPECT_THROW(back_end.AddPlateReading(0, 0, {1, 1}), std::invalid_argument);  // no node yet
+  back_end.AddNode(PointsAt(test::Room(), {0, 0, 0}), {0, 0, 0}, {0, 0, 0});
+  back_end.AddNode(PointsAt(test::Room(), {0.2, 0, 0}), {0.2, 0, 0}, {0.2, 0, 0});
+  EXPECT_NO_THROW(back_end.AddPlateReading(0, 1, {1, 1}));
+  EXPECT_THROW(back_end.AddPlateReading(0, 2, {1, 1}), std::invalid_argument);
+  EXPECT_THROW(back_end.AddPlateReading(0, -1, {1, 1}), std::invalid_argument);
+  EXPECT_THROW(back_end.AddPlateReading(-1, 0, {1, 1}), std::invalid_argument);
+  EXPECT_EQ(back_end.Optimize().plate_readings, 1);
+}
+
+// Expects the constructor to throw std::invalid_argument whose message starts with `field`.
+void ExpectThrowNaming(const SlamBackEndOptions& options, const std::string& field) {
+  try {
+    SlamBackEnd back_end(options);
+    ADD_FAILURE() << "no exception for " << field;
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(field, 0), 0u) << e.what();
+  }
+}
+
+TEST(SlamBackEnd, BadOptionsThrowNamingTheField) {
+  EXPECT_NO_THROW(SlamBackEnd{SlamBackEndOptions{}});
+  SlamBackEndOptions o;
+  o.max_sequential_offset = 0;
+  ExpectThrowNaming(o, "SlamBackEndOptions.max_sequential_offset");
+  o = {};
+  o.max_alignment_distance_m = 0;
+  ExpectThrowNaming(o, "SlamBackEndOptions.max_alignment_distance_m");
+  o = {};
+  o.loop_closure_radius_m = -1;
+  ExpectThrowNaming(o, "SlamBackEndOptions.loop_closure_radius_m");
+  o = {};
+  o.loop_closure_min_separation = 0;
+  ExpectThrowNaming(o, "SlamBackEndOptions.loop_closure_min_separation");
+  o = {};
+  o.icp.min_inlier_fraction = 1.5;
+  ExpectThrowNaming(o, "SlamBackEndOptions.icp.min_inlier_fraction");
+  o = {};
+  o.odometry_rot_rad2_per_m = -0.1;
+  ExpectThrowNaming(o, "SlamBackEndOptions.odometry_");
+  o = {};
+  o.odometry_min_sigma_m = 0;
+  ExpectThrowNaming(o, "SlamBackEndOptions.odometry_min_sigma");
+  o = {};
+  o.plate_sigma_m = std::nan("");
+  ExpectThrowNaming(o, "SlamBackEndOptions.plate_sigma_m");
+  o = {};
+  o.icp.point_sigma_m = 0;
+  ExpectThrowNaming(o, "SlamBackEndOptions.icp");
+  o = {};
+  o.graph.scale_prior_sigma = 0;
+  ExpectThrowNaming(o, "SlamBackEndOptions.graph.scale_prior_sigma");
+}
+
+}  // namespace
+}  // namespace doorplate_localization
