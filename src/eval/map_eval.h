@@ -41,6 +41,7 @@ struct MapEvalResult {
   double sim_seconds = 0.0;          // simulated duration of the sweep
   double seconds = 0.0;              // wall clock of the whole run (simulation, rendering, OCR, SLAM)
   double slam_seconds = 0.0;         // thread CPU time inside the SLAM calls (AddScan + AddPlate)
+  double map_build_seconds = 0.0;    // thread CPU time of building the final maps (back end solve + render)
   int scans = 0;                     // scans fed
   int scans_processed = 0;
   int degenerate_scans = 0;          // processed scans the degeneracy-aware proposal found degenerate

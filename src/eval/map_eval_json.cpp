@@ -26,6 +26,7 @@ void WriteMapEvalJson(const MapEvalResult& r, const MapEvalRunInfo& info, JsonWr
   j.Field("trajectory_rmse_m", r.trajectory_rmse_m).Field("trajectory_max_error_m", r.trajectory_max_error_m);
   j.Field("back_end_odometry_scale", r.odometry_scale).Field("back_end_loop_closures", r.loop_closures);
   j.Field("seconds", r.seconds).Field("sim_seconds", r.sim_seconds).Field("slam_seconds", r.slam_seconds);
+  j.Field("map_build_seconds", r.map_build_seconds);
   j.Field("scans", r.scans).Field("scans_processed", r.scans_processed);
   j.Field("degenerate_scans", r.degenerate_scans);
   j.Field("slam_ms_per_processed_scan", r.scans_processed > 0 ? 1000.0 * r.slam_seconds / r.scans_processed : 0.0);

@@ -28,11 +28,13 @@ runs = [json.load(open(f)) for f in sorted(glob.glob(f"{tmp}/{name}.*.json"))]
 acc = [100 * r["length_accuracy"] for r in runs]
 fin = [r["final_position_error_m"] for r in runs]
 traj = [r["trajectory_max_error_m"] for r in runs]
+build = [r["map_build_seconds"] for r in runs]
 scale = [r["back_end_odometry_scale"] for r in runs]
 print(f"{name}: length accuracy min {min(acc):.2f} mean {sum(acc)/len(acc):.2f} max {max(acc):.2f} % "
       f"({sum(a >= 99.5 for a in acc)}/{len(acc)} >= 99.5 %); trajectory max error {min(traj):.2f}-{max(traj):.2f} m; "
       f"final pose error max {max(fin):.3f} m; "
-      f"odometry scale {min(scale):.4f}-{max(scale):.4f} (true 1/1.02 = 0.9804)")
+      f"odometry scale {min(scale):.4f}-{max(scale):.4f} (true 1/1.02 = 0.9804); "
+      f"final maps built in {min(build):.2f}-{max(build):.2f} s CPU")
 PY
 done
 rm -rf "$tmp"
