@@ -58,6 +58,9 @@ TextSlam::TextSlam(const TextSlamOptions& options)
     : options_(Validated(options)), slam_(options.slam), back_end_(BackEndOptions(options)) {}
 
 bool TextSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index) {
+  if (!std::isfinite(odometry_pose.x_m) || !std::isfinite(odometry_pose.y_m) || !std::isfinite(odometry_pose.theta_rad)) {
+    throw std::invalid_argument("TextSlam::AddScan: odometry_pose must be finite");
+  }
   const bool processed = slam_.AddScan(scan, odometry_pose, scan_index);
   last_scan_ = scan;
   if (processed && options_.back_end.enabled) {

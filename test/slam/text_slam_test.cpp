@@ -75,6 +75,15 @@ TEST(TextSlam, UnusableReadingsAreIgnoredWithTheReason) {
   EXPECT_EQ(slam.num_landmarks(), 0);
 }
 
+TEST(TextSlam, ANonFiniteOdometryPoseIsRefusedAndLeavesTheFilterAsItWas) {
+  TextSlam slam(FewParticles(5));
+  ASSERT_TRUE(slam.AddScan(test::Scan(test::Corridor(), {0, 0, 0}), {0, 0, 0}, 0));
+  EXPECT_THROW(slam.AddScan(test::Scan(test::Corridor(), {1, 0, 0}), {NAN, 0, 0}, 1), std::invalid_argument);
+  EXPECT_EQ(slam.slam().stats().scans_seen, 1);
+  EXPECT_EQ(slam.Trajectory().size(), 1u);
+  EXPECT_NO_THROW(slam.BuildOccupancyGrid());
+}
+
 TEST(TextSlam, BadFieldsThrowNamingTheField) {
   TextSlam slam(FewParticles(2));
   slam.AddScan(test::Scan(test::Room(), {0, 0, 0}), {0, 0, 0}, 0);

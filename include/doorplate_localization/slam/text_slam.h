@@ -72,7 +72,8 @@ class TextSlam {
   // Throws std::invalid_argument naming the field if an option is out of range.
   explicit TextSlam(const TextSlamOptions& options);
 
-  // As RbpfSlam::AddScan. The scan is also kept for ranges of later plate readings.
+  // As RbpfSlam::AddScan. The scan is also kept for ranges of later plate readings (and, with the back end
+  // on, for re-rendering). Throws std::invalid_argument for a non-finite odometry pose (nothing is added).
   bool AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index);
 
   // A doorplate read at the time of `odometry_pose` (base_link in odom). Never throws on a reading that
