@@ -151,14 +151,15 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     if (!processed) return;
     started_ = true;
     last_processed_odom_ = odom_pose;
-    map_to_odom_ = MapToOdom(slam_->EstimatedPose(odom_pose), odom_pose);
     std_msgs::Float64 entropy;
     entropy.data = PoseEntropy(slam_->slam().particles());
     entropy_pub_.publish(entropy);
     if (last_map_update_.isZero() || (stamp - last_map_update_).toSec() >= options_.map_update_interval_s) {
-      PublishMap(stamp);
-      map_to_odom_ = MapToOdom(slam_->EstimatedPose(odom_pose), odom_pose);  // the back end just solved
+      PublishMap(stamp);  // with the back end on, this solves the graph
     }
+    // The back end's last solve (or the best particle before the first one), so that map -> odom agrees
+    // with the map last published.
+    map_to_odom_ = MapToOdom(slam_->EstimatedPose(odom_pose), odom_pose);
   }
 
   void OnDetections(const TextDetectionArray::ConstPtr& msg) {
@@ -195,7 +196,8 @@ class SlamMappingNodelet : public nodelet::Nodelet {
       }
     }
     if (changed && started_) {
-      map_to_odom_ = MapToOdom(slam_->EstimatedPose(last_processed_odom_), last_processed_odom_);  // the best particle may have changed
+      // Before the back end's first solve the pose is the best particle's, which the plate may have changed.
+      map_to_odom_ = MapToOdom(slam_->EstimatedPose(last_processed_odom_), last_processed_odom_);
       markers_pub_.publish(ToTextLandmarkMarkers(MapFrameTextMap(), options_.map_frame, stamp));
     }
   }

@@ -40,6 +40,13 @@ void ValidatePose(const Pose2D& p) {
   }
 }
 
+// The back end's options with the plate noise of the text options (one value for both).
+SlamBackEndOptions BackEndOptions(const TextSlamOptions& o) {
+  SlamBackEndOptions b = o.back_end;
+  b.plate_sigma_m = o.plate_sigma_m;
+  return b;
+}
+
 }  // namespace
 
 RbpfSlamOptions DefaultTextSlamLaserOptions() {
@@ -48,11 +55,6 @@ RbpfSlamOptions DefaultTextSlamLaserOptions() {
   return options;
 }
 
-static SlamBackEndOptions BackEndOptions(const TextSlamOptions& o) {
-  SlamBackEndOptions b = o.back_end;
-  b.plate_sigma_m = o.plate_sigma_m;
-  return b;
-}
 
 TextSlam::TextSlam(const TextSlamOptions& options)
     : options_(Validated(options)), slam_(options.slam), back_end_(BackEndOptions(options)) {}
