@@ -1,6 +1,7 @@
 #include "doorplate_localization/slam/slam_back_end.h"
 
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -124,12 +125,10 @@ SlamBackEndResult SlamBackEnd::Optimize() const {
         if (d < nearest_d) nearest_d = d, nearest = i;
       }
       if (nearest < 0) continue;
-      auto cached = loop_closure_cache_.find({nearest, j});
-      if (cached == loop_closure_cache_.end()) {
-        const Pose2D initial = graph.node(nearest).Between(graph.node(j));
-        cached = loop_closure_cache_.emplace(std::make_pair(nearest, j), Align(nearest, j, initial, true)).first;
-      }
-      if (const std::optional<PoseEdge>& edge = cached->second) {
+      // Aligned afresh at every solve, from this solve's relative pose: an alignment made in an earlier solve
+      // started from a rougher estimate and may have settled elsewhere.
+      const Pose2D initial = graph.node(nearest).Between(graph.node(j));
+      if (const std::optional<PoseEdge> edge = Align(nearest, j, initial, true)) {
         graph.AddEdge(*edge);
         ++result.loop_closures;
       }

@@ -10,7 +10,8 @@
 //    `max_sequential_offset`: their information says what the laser fixes (nothing along a featureless
 //    corridor, everything near an end wall), so odometry fills in exactly where the laser cannot;
 //  - loop closures: after a first solve, each node is aligned with the nearest node at least
-//    `loop_closure_min_separation` nodes away within `loop_closure_radius_m` (Huber kernel);
+//    `loop_closure_min_separation` nodes away within `loop_closure_radius_m` (Huber kernel), afresh at
+//    every solve (only the sequential alignments are kept between solves);
 //  - doorplates: each reading is the plate's position in its node's frame (bearing and range, σ
 //    `plate_sigma_m`); a plate read twice is a loop closure, and the odometry edges between the nodes
 //    where adjacent plates were read are the paper's inter-plate distances (eq. 13; eq. 14's sum is
@@ -18,9 +19,7 @@
 // Frames: map frame = the first node's frame as the filter set it; node points are in base_link.
 #pragma once
 
-#include <map>
 #include <optional>
-#include <utility>
 #include <vector>
 
 #include "doorplate_localization/common/geometry2d.h"
@@ -98,9 +97,7 @@ class SlamBackEnd {
   std::vector<PlateReading> plates_;
   mutable std::vector<PoseEdge> sequential_edges_;  // cached alignments
   mutable int sequential_done_ = 0;                  // nodes whose sequential alignments are cached
-  // Loop-closure alignments tried, by (from, to): a pair found again in a later solve is not re-aligned
-  // (the relative guess changes little between solves; unset = the alignment failed).
-  mutable std::map<std::pair<int, int>, std::optional<PoseEdge>> loop_closure_cache_;
+
 };
 
 }  // namespace doorplate_localization

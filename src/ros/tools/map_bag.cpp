@@ -59,6 +59,14 @@ struct Args {
 
 std::string Topic(const std::string& name) { return name.empty() || name[0] == '/' ? name : "/" + name; }
 
+// A bag may hold a topic under its global name ("/scan") or, recorded by some tools, without the leading
+// slash ("scan"): query both.
+std::vector<std::string> BothSpellings(const std::vector<std::string>& topics) {
+  std::vector<std::string> both;
+  for (const std::string& t : topics) both.push_back(t), both.push_back(t.substr(1));
+  return both;
+}
+
 Args ParseArgs(int argc, char** argv) {
   Args args;
   for (int i = 1; i < argc; ++i) {
@@ -107,11 +115,11 @@ std::unique_ptr<tf2::BufferCore> LoadTf(rosbag::Bag& bag) {
   rosbag::View all(bag);
   const double span_s = (all.getEndTime() - all.getBeginTime()).toSec();
   auto buffer = std::make_unique<tf2::BufferCore>(ros::Duration(span_s + 60.0));
-  rosbag::View tf_view(bag, rosbag::TopicQuery(std::vector<std::string>{"/tf", "/tf_static"}));
+  rosbag::View tf_view(bag, rosbag::TopicQuery(BothSpellings({"/tf", "/tf_static"})));
   for (const rosbag::MessageInstance& m : tf_view) {
     const auto msg = m.instantiate<tf2_msgs::TFMessage>();
     if (!msg) continue;
-    const bool is_static = m.getTopic() == "/tf_static";
+    const bool is_static = Topic(m.getTopic()) == "/tf_static";
     for (const geometry_msgs::TransformStamped& t : msg->transforms) {
       buffer->setTransform(t, "bag", is_static);  // a malformed transform is logged by tf2 and skipped
     }
@@ -145,7 +153,7 @@ int Run(const Args& args) {
 
   std::vector<std::string> topics{args.scan_topic};
   if (args.use_text) topics.push_back(args.detections_topic);
-  rosbag::View view(bag, rosbag::TopicQuery(topics));
+  rosbag::View view(bag, rosbag::TopicQuery(BothSpellings(topics)));
   const std::size_t total = view.size();
   dl::TextSlam slam(args.options);
   Counters n;
