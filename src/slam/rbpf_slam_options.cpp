@@ -64,6 +64,14 @@ const Field& Find(const std::string& name) {
   throw std::invalid_argument("unknown SLAM option '" + name + "'");
 }
 
+// `value` as an int, or std::invalid_argument naming option `name` if it is not a whole number.
+int WholeNumber(const std::string& name, double value) {
+  if (value != std::floor(value) || std::abs(value) > 1e9) {
+    throw std::invalid_argument("SLAM option '" + name + "' must be a whole number, got " + std::to_string(value));
+  }
+  return static_cast<int>(value);
+}
+
 using T = TextSlamOptions;
 // A text SLAM option: a double, a whole number or a flag (0 / 1).
 struct TextField {
@@ -120,10 +128,7 @@ void SetTextSlamOption(const std::string& name, double value, TextSlamOptions* o
     if (f->real) {
       *f->real(*options) = value;
     } else if (f->whole) {
-      if (value != std::floor(value) || std::abs(value) > 1e9) {
-        throw std::invalid_argument("SLAM option '" + name + "' must be a whole number, got " + std::to_string(value));
-      }
-      *f->whole(*options) = static_cast<int>(value);
+      *f->whole(*options) = WholeNumber(name, value);
     } else {
       if (value != 0.0 && value != 1.0) {
         throw std::invalid_argument("SLAM option '" + name + "' must be 0 or 1, got " + std::to_string(value));
@@ -157,10 +162,7 @@ void SetRbpfSlamOption(const std::string& name, double value, RbpfSlamOptions* o
     *f.real(*options) = value;
     return;
   }
-  if (value != std::floor(value) || std::abs(value) > 1e9) {
-    throw std::invalid_argument("SLAM option '" + name + "' must be a whole number, got " + std::to_string(value));
-  }
-  *f.whole(*options) = static_cast<int>(value);
+  *f.whole(*options) = WholeNumber(name, value);
 }
 
 double GetRbpfSlamOption(const std::string& name, const RbpfSlamOptions& options) {

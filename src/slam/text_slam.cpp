@@ -34,9 +34,10 @@ void ValidateSighting(const PlateSighting& s) {
   }
 }
 
-void ValidatePose(const Pose2D& p) {
+// `caller` names the method in the message ("TextSlam::AddScan").
+void ValidatePose(const Pose2D& p, const char* caller) {
   if (!std::isfinite(p.x_m) || !std::isfinite(p.y_m) || !std::isfinite(p.theta_rad)) {
-    throw std::invalid_argument("TextSlam::AddPlate: odometry_pose must be finite");
+    throw std::invalid_argument(std::string(caller) + ": odometry_pose must be finite");
   }
 }
 
@@ -60,9 +61,7 @@ TextSlam::TextSlam(const TextSlamOptions& options)
     : options_(Validated(options)), slam_(options.slam), back_end_(BackEndOptions(options)) {}
 
 bool TextSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index) {
-  if (!std::isfinite(odometry_pose.x_m) || !std::isfinite(odometry_pose.y_m) || !std::isfinite(odometry_pose.theta_rad)) {
-    throw std::invalid_argument("TextSlam::AddScan: odometry_pose must be finite");
-  }
+  ValidatePose(odometry_pose, "TextSlam::AddScan");
   const bool processed = slam_.AddScan(scan, odometry_pose, scan_index);
   last_scan_ = scan;
   if (processed && options_.back_end.enabled) {
@@ -111,7 +110,7 @@ std::optional<double> TextSlam::RangeFromLastScan(double bearing_rad) const {
 
 TextSlamPlateResult TextSlam::AddPlate(const PlateSighting& sighting, const Pose2D& odometry_pose) {
   ValidateSighting(sighting);
-  ValidatePose(odometry_pose);
+  ValidatePose(odometry_pose, "TextSlam::AddPlate");
   TextSlamPlateResult result;
   if (!slam_.started()) {
     result.outcome = PlateOutcome::kNoScanYet;
