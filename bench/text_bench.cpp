@@ -1,14 +1,17 @@
 // Text extractor throughput on 640×480 frames, with the fixed band (the paper's method) and on the full
 // image, on one core (cv::setNumThreads(1); run with OMP_THREAD_LIMIT=1 for Tesseract). Also prints the
 // mean number of text boxes per frame for MSER, MSER + NMS and band + MSER + NMS (paper Fig. 12).
-// Usage: doorplate_text_bench [--frames N] [image ...]
+// Usage: doorplate_text_bench [--frames N] [--size WxH] [--recognizer tesseract|ppocr] [image ...]
 //   Without images: N synthetic corridor frames (seeded) — wall, door, handle, a moving doorplate, a
-//   poster and a sign. With images: they are processed in turn until N frames have been processed.
+//   poster and a sign — drawn at 640×480 and scaled to --size (e.g. 1280x720: a USB camera; the band
+//   fractions are kept). With images: they are processed in turn until N frames have been processed.
 #include <chrono>
 #include <ctime>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -72,9 +75,16 @@ struct Result {
 };
 
 // Whole extractor (detection + OCR + validation + tracking).
-Result RunExtractor(const std::vector<cv::Mat>& frames, bool band) {
+Result RunExtractor(const std::vector<cv::Mat>& frames, bool band, dl::TextRecognizerType recognizer) {
   dl::TextExtractorOptions options;
   options.detector.band.enabled = band;
+  options.recognizer_type = recognizer;
+  dl::UseReadingScheduleFor(recognizer, &options.tracker);
+  const double scale = frames[0].cols / 640.0;  // the tracker's intrinsics follow the size (same field of view)
+  options.tracker.fx_px *= scale;
+  options.tracker.cx_px = frames[0].cols / 2.0;
+  options.tracker.max_center_jump_px *= scale;
+  // (the detector scales its pixel sizes itself: MserBandDetectorOptions::reference_width_px)
   dl::TextExtractor extractor(options);
   Result result;
   size_t boxes = 0;
@@ -113,10 +123,24 @@ Result RunDetector(const std::vector<cv::Mat>& frames, bool band, bool nms) {
 
 int main(int argc, char** argv) {
   int num_frames = 300;
+  cv::Size size(640, 480);
+  dl::TextRecognizerType recognizer = dl::TextRecognizerType::kTesseract;
   std::vector<std::string> paths;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--frames") == 0 && i + 1 < argc) {
       num_frames = std::atoi(argv[++i]);
+    } else if (std::strcmp(argv[i], "--size") == 0 && i + 1 < argc) {
+      if (std::sscanf(argv[++i], "%dx%d", &size.width, &size.height) != 2 || size.width < 64 || size.height < 48) {
+        std::fprintf(stderr, "--size must be WIDTHxHEIGHT\n");
+        return 2;
+      }
+    } else if (std::strcmp(argv[i], "--recognizer") == 0 && i + 1 < argc) {
+      try {
+        recognizer = dl::ParseTextRecognizerType(argv[++i], "--recognizer");
+      } catch (const std::invalid_argument& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 2;
+      }
     } else {
       paths.push_back(argv[i]);
     }
@@ -133,7 +157,9 @@ int main(int argc, char** argv) {
   cv::RNG rng(42);
   for (int i = 0; i < num_frames; ++i) {
     if (paths.empty()) {
-      frames.push_back(SyntheticFrame(i, rng));
+      cv::Mat frame = SyntheticFrame(i, rng);
+      if (frame.size() != size) cv::resize(frame, frame, size, 0, 0, cv::INTER_LINEAR);
+      frames.push_back(frame);
       continue;
     }
     const std::string& path = paths[i % paths.size()];
@@ -155,8 +181,9 @@ int main(int argc, char** argv) {
               "boxes/frame | band+MSER+NMS %.1f (%.1f) fps %.2f boxes/frame\n",
               mser.fps, mser.cpu_fps, mser.boxes_per_frame, mser_nms.fps, mser_nms.cpu_fps,
               mser_nms.boxes_per_frame, band.fps, band.cpu_fps, band.boxes_per_frame);
-  const Result full = RunExtractor(frames, false);
-  const Result banded = RunExtractor(frames, true);
+  std::printf("recognizer: %s\n", dl::ToString(recognizer).c_str());
+  const Result full = RunExtractor(frames, false, recognizer);
+  const Result banded = RunExtractor(frames, true, recognizer);
   std::printf("extractor (w/ OCR): full image %.1f (%.1f) fps %.2f boxes/frame | band %.1f (%.1f) fps %.2f "
               "boxes/frame\n",
               full.fps, full.cpu_fps, full.boxes_per_frame, banded.fps, banded.cpu_fps, banded.boxes_per_frame);

@@ -10,7 +10,8 @@ add_library(doorplate_sim
   src/sim/image_noise.cpp
   src/sim/simulator.cpp
   src/sim/top_down_view.cpp
-  src/sim/ground_truth_maps.cpp)
+  src/sim/ground_truth_maps.cpp
+  src/sim/photo_world.cpp)
 target_include_directories(doorplate_sim PUBLIC include)
 target_link_libraries(doorplate_sim PUBLIC doorplate_common doorplate_maps ${OpenCV_LIBS} PRIVATE yaml-cpp)
 
@@ -22,14 +23,17 @@ target_link_libraries(doorplate_sim_snapshot doorplate_sim)
 # Ground-truth occupancy and text maps of a world file (maps/ holds those of worlds/).
 add_executable(doorplate_world_maps src/tools/world_maps.cpp)
 target_link_libraries(doorplate_world_maps doorplate_sim)
+# A bench world whose plates are real plate photographs (crops listed in a TSV).
+add_executable(doorplate_photo_world src/tools/photo_world.cpp)
+target_link_libraries(doorplate_photo_world doorplate_sim)
 
-install(TARGETS doorplate_sim doorplate_sim_bench doorplate_sim_snapshot doorplate_world_maps
+install(TARGETS doorplate_sim doorplate_sim_bench doorplate_sim_snapshot doorplate_world_maps doorplate_photo_world
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
   foreach(name world world_loader laser_simulator odometry_simulator camera_renderer simulator top_down_view
-               ground_truth_maps)
+               ground_truth_maps photo_world)
     doorplate_add_core_test(${name}_test test/sim/${name}_test.cpp doorplate_sim)
   endforeach()
 endif()

@@ -17,6 +17,9 @@ PKGS=(
   # core libraries
   libmrpt-dev libopencv-dev libtesseract-dev tesseract-ocr-eng libsuitesparse-dev libyaml-cpp-dev
   libeigen3-dev libgtest-dev
+  # the learned text reader's install step (scripts/fetch_ocr_models.sh: a throwaway venv from PyPI) and the
+  # `tesseract` command (a baseline of bench/real_photos.sh)
+  python3-venv tesseract-ocr
   # fuzzing the file parsers (scripts/fuzz.sh): clang with libFuzzer and the sanitizer runtimes
   clang-14 libclang-rt-14-dev llvm-14
   # MRPT's sample datasets: the Málaga rawlog doorplate_map_rawlog maps
@@ -31,4 +34,11 @@ $SUDO apt-get install -y -qq --no-install-recommends "${PKGS[@]}"
 if ! getent hosts localhost > /dev/null 2>&1; then
   echo "install_deps: 'localhost' does not resolve; adding '127.0.0.1 localhost' to /etc/hosts (roslaunch needs it)"
   echo "127.0.0.1 localhost" | $SUDO tee -a /etc/hosts > /dev/null
+fi
+# The optional learned text reader (PP-OCRv4 models from PyPI's rapidocr-onnxruntime wheel, rewritten for
+# OpenCV 4.6). Without PyPI the package still builds and runs on Tesseract; its tests of the learned
+# reader are then skipped, saying why.
+if ! bash "$(dirname "$0")/fetch_ocr_models.sh"; then
+  echo "install_deps: WARNING: the learned text reader's models could not be installed (no PyPI?);" \
+       "detector_type:=db / recognizer_type:=ppocr will refuse to start, Tesseract works"
 fi

@@ -28,6 +28,7 @@ std::vector<OptionSpec> LocalizeOptions() {
       {"speed-mps", "0.4", "cruise speed of the robot, m/s"},
       {"known-rooms", "off", "give the text validator the text map's room list (on) or not (off)"},
       {"camera-hz", "0", "camera rate, Hz (0: the world's)"},
+      {"recognizer", "tesseract", "text recogniser: tesseract or ppocr (the learned one; scripts/fetch_ocr_models.sh)"},
       {"max-particles", "5000", "filter max_particles (global localization draws this many)"},
       {"laser-model", "likelihood_field", "laser_model_type: likelihood_field, likelihood_field_prob or beam"},
   };
@@ -105,6 +106,12 @@ int RunLocalizeCommand(const std::vector<std::string>& args, const std::string& 
   if (options.speed_mps <= 0.0) throw UsageError("localize: --speed-mps must be > 0");
   options.known_rooms = parsed.OnOff("known-rooms");
   options.camera_rate_hz = parsed.Number("camera-hz");
+  try {
+    options.extractor.recognizer_type = ParseTextRecognizerType(parsed.String("recognizer"), "localize: --recognizer");
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  UseReadingScheduleFor(options.extractor.recognizer_type, &options.extractor.tracker);
   if (options.camera_rate_hz < 0.0) throw UsageError("localize: --camera-hz must be >= 0");
   options.filter.filter.max_particles = parsed.Integer("max-particles", 1);
   try {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "doorplate_localization/mcl/text_amcl_session.h"
 #include "doorplate_localization/sim/simulator.h"
 #include "eval_args.h"
 #include "localize_sensors.h"
@@ -47,15 +48,17 @@ class TrialRun {
     trial_.seed = seed_;
     trial_.start_pose = poses_.Sample(rng_);
     sim_.Teleport(trial_.start_pose);
-    TextAmclSetupOptions setup = options.filter;
-    setup.filter.random_seed = seed_;
-    setup.use_text = options.method == LocalizeMethod::kTextAmcl;
-    filter_ = MakeTextAmcl(setup, grid, setup.use_text ? text_map : nullptr);
-    filter_->GlobalLocalization();
-    if (setup.use_text) {
+    TextAmclSessionOptions session;
+    session.setup = options.filter;
+    session.setup.filter.random_seed = seed_;
+    session.setup.use_text = options.method == LocalizeMethod::kTextAmcl;
+    session.start_with_global_localization = true;
+    session_ = std::make_unique<TextAmclSession>(session, grid, session.setup.use_text ? text_map : nullptr);
+    if (session.setup.use_text) {
       TextExtractorOptions extractor = options.extractor;
       extractor.tracker.fx_px = sim_.camera().intrinsics().fx_px;
       extractor.tracker.cx_px = sim_.camera().intrinsics().cx_px;
+      extractor.validator.pattern = text_map->room_pattern;  // the building's identifier format
       if (options.known_rooms) extractor.validator.known_rooms = text_map->Texts();
       extractor_ = std::make_unique<TextExtractor>(extractor);
       double x = 0, y = 0, z = 0, pitch = 0;
@@ -88,7 +91,7 @@ class TrialRun {
         done = true;
       }
     }
-    trial_.laser_updates = filter_->Status().laser_updates;
+    trial_.laser_updates = session_->Status().laser_updates;
     trial_.sim_seconds = sim_.time_s();
     trial_.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return trial_;
@@ -106,18 +109,12 @@ class TrialRun {
     return o;
   }
 
-  // Control and laser update at the laser's rate. Returns true when the trial is over.
+  // Control and the session's scan input at the laser's rate. Returns true when the trial is over.
   bool ScanStep() {
     last_scan_ = ToLocalizationScan(sim_.Scan(), sim_.world().sensors.laser);
     VelocityCommand cmd = Sweep();
     sim_.SetCommand(cmd.linear_mps, cmd.angular_rps);
-    const Pose2D odom = sim_.odom_pose();
-    const bool first = !has_odom_reference_;
-    if (filter_->UpdateOdometry(odom) || first) {
-      odom_at_update_ = odom;
-      has_odom_reference_ = true;
-    }
-    filter_->UpdateLaser(last_scan_);
+    session_->AddScan(sim_.time_s(), sim_.odom_pose(), last_scan_);
     return CheckState();
   }
 
@@ -133,26 +130,19 @@ class TrialRun {
     return cmd;
   }
 
-  // One camera image through the reader; every report updates the filter at the current pose.
+  // One camera image through the reader; its reports go to the session with the odometry of this moment
+  // (the session measures their range and weighs them there).
   bool CameraStep() {
     const std::vector<PlateReport> reports = extractor_->Process(sim_.CameraImage(), sim_.time_s());
-    bool done = false;
-    for (const PlateReport& report : reports) {
-      ++trial_.plate_reports;
-      const PlateReading reading = ToPlateReading(
-          report, camera_yaw_rad_,
-          RangeAlongBearing(last_scan_, camera_yaw_rad_ + report.bearing_rad, 1.5 * std::fabs(last_scan_.angle_increment_rad)));
-      if (!ValidatePlateReading(reading).empty()) continue;
-      // Bring the particles to the robot's current pose first (amcl's request_nomotion_update), so the
-      // reading's bearing and range are compared from where it was taken.
-      filter_->ForceUpdate();
-      if (filter_->UpdateOdometry(sim_.odom_pose())) odom_at_update_ = sim_.odom_pose();
-      filter_->UpdateLaser(last_scan_);
-      if (filter_->UpdatePlate(reading).used) ++trial_.plate_updates;
-      done = CheckState() || done;
-      if (done) break;
+    if (reports.empty()) return false;
+    std::vector<PlateReading> readings;
+    for (const PlateReport& report : reports) readings.push_back(ToPlateReading(report, camera_yaw_rad_));
+    trial_.plate_reports += static_cast<int>(reports.size());
+    session_->AddOdometry(sim_.time_s(), sim_.odom_pose());
+    for (const PlateReadingOutcome& p : session_->AddPlates(sim_.time_s(), readings).plates) {
+      if (p.disposition == PlateDisposition::kWeighed && p.result.used) ++trial_.plate_updates;
     }
-    return done;
+    return CheckState();
   }
 
   LocalizeFix Fix() const {
@@ -160,7 +150,7 @@ class TrialRun {
     fix.travel_m = sim_.distance_travelled_m() - search_start_travel_m_;
     fix.sim_time_s = sim_.time_s() - search_start_time_s_;
     fix.truth = sim_.true_pose();
-    fix.estimate = filter_->Estimate().pose.Compose(odom_at_update_.Between(sim_.odom_pose()));
+    fix.estimate = session_->PoseAtOdometry(sim_.odom_pose());
     fix.error_m = std::hypot(fix.estimate.x_m - fix.truth.x_m, fix.estimate.y_m - fix.truth.y_m);
     const double angle = std::fabs(NormalizeAngle(fix.estimate.theta_rad - fix.truth.theta_rad));
     fix.error_deg = angle * 180.0 / M_PI;
@@ -170,7 +160,7 @@ class TrialRun {
 
   // Convergence (and, after a kidnap, loss and recovery) checks. Returns true when the trial is over.
   bool CheckState() {
-    const LocalizationState state = filter_->State();
+    const LocalizationState state = session_->Status().state;
     if (!trial_.kidnapped) {
       if (state != LocalizationState::kConverged) return false;
       trial_.converged = true;
@@ -182,7 +172,7 @@ class TrialRun {
     if (state == LocalizationState::kLost && !trial_.lost_detected) {
       trial_.lost_detected = true;
       trial_.lost_detected_travel_m = sim_.distance_travelled_m() - search_start_travel_m_;
-      trial_.lost_reason = ToString(filter_->Status().lost_reason);
+      trial_.lost_reason = ToString(session_->Status().lost_reason);
     }
     if (state != LocalizationState::kConverged) return false;
     const LocalizeFix fix = Fix();
@@ -208,12 +198,10 @@ class TrialRun {
   std::mt19937_64 rng_;
   Simulator sim_;
   CorridorSweep sweep_;
-  std::unique_ptr<TextAmcl> filter_;
+  std::unique_ptr<TextAmclSession> session_;
   std::unique_ptr<TextExtractor> extractor_;
   double camera_yaw_rad_ = 0.0;
-  LocalizationScan last_scan_;
-  Pose2D odom_at_update_;
-  bool has_odom_reference_ = false;
+  LocalizationScan last_scan_;  // the sweep drives on it
   double search_start_travel_m_ = 0.0;
   double search_start_time_s_ = 0.0;
   LocalizeTrial trial_;

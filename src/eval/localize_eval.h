@@ -3,12 +3,14 @@
 // heading along the corridor ± heading noise), starts the filter with global localization (max_particles
 // uniform over the free cells) and lets the robot search with the paper's strategy (Sec. 3.4: follow a wall
 // along the corridor, turn around at the end — CorridorSweep, restarted whenever a sweep ends) in the
-// Simulator (physics 100 Hz, laser and control at the laser's rate). With text_amcl every camera image goes
-// to the real TextExtractor and each plate report becomes a PlateReading for the filter; amcl ignores
-// readings, so its trials do not render the camera (the robot's motion is the same either way).
+// Simulator (physics 100 Hz, laser and control at the laser's rate). The filter runs in a TextAmclSession
+// (mcl/text_amcl_session.h), the loop the Text AMCL nodelet runs: scans with their odometry, plate readings
+// with the odometry of their moment, its ordering, range and unknown-room rules. With text_amcl every camera
+// image goes to the real TextExtractor and each plate report becomes a PlateReading for the session; amcl
+// ignores readings, so its trials do not render the camera (the robot's motion is the same either way).
 // A trial ends when the filter first reports kConverged (paper: "when the particles were converged to one
-// cluster, the localization process ended"): success if the estimate — the heaviest cluster's mean carried
-// to the current time by the odometry since the last filter update (what amcl's map→odom gives) — is within
+// cluster, the localization process ended"): success if the estimate — the session's map→odom composed
+// with the current odometry (the heaviest cluster's mean carried to now) — is within
 // success_distance_m and success_angle_rad of the true pose, else a wrong convergence; or, unconverged,
 // after max_travel_m of driving (failure).
 // Kidnap trials (kidnap = true): after a successful convergence the robot is teleported to another random

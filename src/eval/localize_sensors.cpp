@@ -17,8 +17,9 @@ LocalizationScan ToLocalizationScan(const SimulatedScan& scan, const LaserOption
   return out;
 }
 
-PlateReading ToPlateReading(const PlateReport& report, double camera_yaw_rad, std::optional<double> range_m) {
-  PlateReading reading = PlateReadingAt(report.text, report.confidence, camera_yaw_rad + report.bearing_rad, range_m);
+PlateReading ToPlateReading(const PlateReport& report, double camera_yaw_rad) {
+  PlateReading reading =
+      PlateReadingAt(report.text, report.confidence, camera_yaw_rad + report.bearing_rad, std::nullopt);
   reading.camera_side = camera_yaw_rad > 0.0 ? CameraSide::kLeft : camera_yaw_rad < 0.0 ? CameraSide::kRight
                                                                                         : CameraSide::kUnknown;
   return reading;

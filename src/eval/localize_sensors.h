@@ -18,12 +18,11 @@ namespace doorplate_localization {
 // The scan with the laser's mounting pose (mount_x_m, mount_y_m, mount_yaw_rad) in base_link.
 LocalizationScan ToLocalizationScan(const SimulatedScan& scan, const LaserOptions& laser);
 
-// Plate ranges: RangeAlongBearing (mcl/localization_scan.h), shared with the Text AMCL nodelet.
-
 // A plate report of the camera mounted with yaw `camera_yaw_rad` in base_link (left camera: +pi/2) as a
 // filter reading (PlateReadingAt): text, confidence (the report's vote share × mean OCR confidence), base_link bearing =
-// camera yaw + the report's bearing (both counter-clockwise), the range if given, and the camera side
-// from the sign of the yaw. The camera's optical centre is taken as base_link's origin (as above).
-PlateReading ToPlateReading(const PlateReport& report, double camera_yaw_rad, std::optional<double> range_m);
+// camera yaw + the report's bearing (both counter-clockwise), no range (TextAmclSession measures it from its
+// scans, as in the nodelet), and the camera side from the sign of the yaw. The camera's optical centre is
+// taken as base_link's origin (as above).
+PlateReading ToPlateReading(const PlateReport& report, double camera_yaw_rad);
 
 }  // namespace doorplate_localization

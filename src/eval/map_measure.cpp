@@ -4,6 +4,8 @@
 #include <cmath>
 #include <tuple>
 
+#include "doorplate_localization/common/room_id.h"
+
 namespace doorplate_localization {
 namespace {
 
@@ -147,7 +149,7 @@ PlateScore ScorePlates(const TextMap& mapped, const TextMap& truth, const Pose2D
   for (std::size_t i = 0; i < mapped.landmarks.size(); ++i) {
     const Vec2 p = world_from_map.TransformPoint(mapped.landmarks[i].pose.Position());
     for (std::size_t j = 0; j < truth.landmarks.size(); ++j) {
-      if (truth.landmarks[j].text != mapped.landmarks[i].text) continue;
+      if (!SameRoom(truth.landmarks[j].text, mapped.landmarks[i].text)) continue;
       const double d = Norm(p - truth.landmarks[j].pose.Position());
       if (d <= match_radius_m) pairs.emplace_back(d, static_cast<int>(i), static_cast<int>(j));
     }

@@ -5,7 +5,9 @@
 #include <fstream>
 #include <iostream>
 
+#include "doorplate_localization/sim/camera_renderer.h"
 #include "doorplate_localization/sim/world_loader.h"
+#include "doorplate_localization/text/band_geometry.h"
 #include "eval_args.h"
 #include "eval_commands.h"
 #include "ocr_eval.h"
@@ -18,15 +20,58 @@ std::vector<OptionSpec> OcrOptions() {
   std::vector<OptionSpec> specs = CommonOptions();
   specs.push_back({"band", "on", "extractor searches the fixed image band (on) or the full image (off)"});
   specs.push_back({"known-rooms", "off", "give the validator the world's room list (on) or not (off: open vocabulary)"});
+  specs.push_back({"detector", "mser", "text detector: mser or db (the learned one; scripts/fetch_ocr_models.sh)"});
+  specs.push_back({"recognizer", "tesseract", "recogniser: tesseract or ppocr (the learned one)"});
   specs.push_back({"ocr-mode", "default", "Tesseract segmentation: line, word, or default (TesseractOcrOptions)"});
   specs.push_back({"detector-every", "1", "run the Figure 12 detector modes on every n-th frame (0: never)"});
   specs.push_back({"max-pass-seconds", "1800", "simulated seconds after which an unfinished sweep ends the pass"});
+  specs.push_back({"camera-px", "", "WIDTHxHEIGHT: render at this size instead of the world's (e.g. 1280x720; same "
+                                    "horizontal field of view, derived intrinsics)"});
+  specs.push_back({"band-geometry", "off", "on: band rows from the camera's intrinsics and mount and the world's "
+                                           "plate heights (BandFromGeometry) instead of the fixed fractions"});
   return specs;
 }
 
+// "1280x720" → the world's camera at that size with its other intrinsics derived again.
+void SetCameraSize(const std::string& size, World* world) {
+  int width = 0, height = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(size.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 || x != 'x' || width < 16 ||
+      height < 16 || width > 8192 || height > 8192) {
+    throw UsageError("ocr: --camera-px: '" + size + "' must be WIDTHxHEIGHT, each in 16..8192");
+  }
+  CameraOptions& camera = world->sensors.camera;
+  camera.width_px = width;
+  camera.height_px = height;
+  camera.fx_px = camera.fy_px = camera.cx_px = camera.cy_px = 0.0;
+}
+
+// The band for the world's camera: its intrinsics and mount, the world's plates from top to bottom edge
+// (photo plates have their text anywhere on the face), read 1.0-3.5 m away (BandGeometryOptions).
+BandOptions BandForWorld(const World& world) {
+  const CameraOptions& camera = world.sensors.camera;
+  const CameraIntrinsics k = IntrinsicsFromOptions(camera);
+  BandGeometryOptions g;
+  g.image_height_px = k.height_px;
+  g.fy_px = k.fy_px;
+  g.cy_px = k.cy_px;
+  g.mount_height_m = camera.mount_height_m;
+  g.pitch_up_deg = camera.pitch_deg;
+  const std::vector<const TextSign*> plates = world.Plates();
+  if (plates.empty()) throw std::invalid_argument("ocr: --band-geometry: the world has no plates");
+  g.text_bottom_min_m = g.text_top_max_m = plates[0]->center_height_m;
+  for (const TextSign* plate : plates) {
+    g.text_bottom_min_m = std::min(g.text_bottom_min_m, plate->center_height_m - plate->height_m / 2);
+    g.text_top_max_m = std::max(g.text_top_max_m, plate->center_height_m + plate->height_m / 2);
+  }
+  return BandFromGeometry(g);
+}
+
 void PrintSummary(const OcrEvalResult& r, const OcrEvalOptions& o) {
-  std::printf("world %s: %d pass(es), seed %llu, band %s, known rooms %s, OCR %s, %d frames\n", r.world_name.c_str(),
-              o.passes, static_cast<unsigned long long>(o.seed), o.band ? "on" : "off", o.known_rooms ? "on" : "off",
+  std::printf("world %s: %d pass(es), seed %llu, band %s, known rooms %s, %s + %s (Tesseract %s), %d frames\n",
+              r.world_name.c_str(), o.passes, static_cast<unsigned long long>(o.seed), o.band ? "on" : "off",
+              o.known_rooms ? "on" : "off", ToString(o.extractor.detector_type).c_str(),
+              ToString(o.extractor.recognizer_type).c_str(),
               o.extractor.ocr.line_mode == OcrLineMode::kSingleWord ? "single word" : "single line", r.Frames());
   for (size_t i = 0; i < r.passes.size(); ++i) {
     const OcrPassResult& p = r.passes[i];
@@ -78,6 +123,13 @@ int RunOcrCommand(const std::vector<std::string>& args, const std::string& comma
   } else if (ocr_mode != "default") {
     throw UsageError("ocr: --ocr-mode: '" + ocr_mode + "' must be line, word or default");
   }
+  try {
+    options.extractor.detector_type = ParseTextDetectorType(parsed.String("detector"), "ocr: --detector");
+    options.extractor.recognizer_type = ParseTextRecognizerType(parsed.String("recognizer"), "ocr: --recognizer");
+    UseReadingScheduleFor(options.extractor.recognizer_type, &options.extractor.tracker);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
   options.detector_every_n_frames = parsed.Integer("detector-every", 0);
   options.max_pass_time_s = parsed.Number("max-pass-seconds");
   if (options.max_pass_time_s <= 0) throw UsageError("ocr: --max-pass-seconds must be > 0");
@@ -88,7 +140,13 @@ int RunOcrCommand(const std::vector<std::string>& args, const std::string& comma
       throw UsageError("ocr: --json: folder " + parent.string() + " does not exist");
     }
   }
-  const World world = LoadWorldFile(common.world_path);
+  World world = LoadWorldFile(common.world_path);
+  if (!parsed.String("camera-px").empty()) SetCameraSize(parsed.String("camera-px"), &world);
+  if (parsed.OnOff("band-geometry")) {
+    options.extractor.detector.band = BandForWorld(world);
+    std::printf("band rows [%d, %d) of %d from geometry\n", options.extractor.detector.band.top_px,
+                options.extractor.detector.band.bottom_px, world.sensors.camera.height_px);
+  }
   const OcrEvalResult result = RunOcrEval(world, options);
   PrintSummary(result, options);
   if (!common.json_path.empty()) {

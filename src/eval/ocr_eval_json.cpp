@@ -86,6 +86,8 @@ void WriteOcrEvalJson(const OcrEvalResult& r, const OcrEvalRunInfo& info, JsonWr
       .Field("speed_mps", info.options.speed_mps)
       .Field("band", info.options.band)
       .Field("known_rooms", info.options.known_rooms)
+      .Field("detector", ToString(info.options.extractor.detector_type))
+      .Field("recognizer", ToString(info.options.extractor.recognizer_type))
       .Field("ocr_mode", info.options.extractor.ocr.line_mode == OcrLineMode::kSingleWord ? "word" : "line")
       .Field("plates_in_world", static_cast<int>(r.plates.size()))
       .Field("plates_total", r.PlatesTotal())

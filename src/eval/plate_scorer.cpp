@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <limits>
 
+#include "doorplate_localization/common/room_id.h"
+
 namespace doorplate_localization {
 namespace {
 
@@ -91,7 +93,10 @@ std::vector<int> PlateScorer::ObserveFrame(const Pose2D& true_pose, bool on_leg)
 int PlateScorer::MatchBox(const cv::Rect& box_px, const Pose2D& true_pose) const {
   const cv::Point2d centre(box_px.x + 0.5 * box_px.width, box_px.y + 0.5 * box_px.height);
   int inside = -1, near = -1;
-  double inside_distance = std::numeric_limits<double>::infinity(), near_distance = 0.5 * box_px.width;
+  // Near: within half the box width plus one text height of its centre. A separator can split a plate's
+  // line in one frame ("E14" + "295"), and the report then carries the fragment's box.
+  double inside_distance = std::numeric_limits<double>::infinity(),
+         near_distance = 0.5 * box_px.width + box_px.height;
   for (size_t i = 0; i < plates_.size(); ++i) {
     cv::Point2d px;
     if (!Visible(static_cast<int>(i), true_pose, &px)) continue;
@@ -121,7 +126,7 @@ ReportVerdict PlateScorer::ScoreReport(const PlateReport& report, const Pose2D& 
   verdict.duplicate = !record.reported_texts.empty();
   if (verdict.duplicate) ++pass_.duplicates;
   record.reported_texts.push_back(report.text);
-  if (report.text != plates_[verdict.plate].text) {
+  if (!SameRoom(report.text, plates_[verdict.plate].text)) {
     verdict.kind = ReportKind::kFalseRead;
     ++pass_.false_reads;
     return verdict;

@@ -67,7 +67,9 @@ class PlateScorer {
   ReportVerdict ScoreReport(const PlateReport& report, const Pose2D& true_pose);
   const PassScore& pass() const { return pass_; }
 
-  // The plate a box at `true_pose` shows (index into plates()), or -1.
+  // The plate a box at `true_pose` shows (index into plates()), or -1: the visible plate whose centre
+  // pixel is inside the box (the nearest), else the nearest within half the box width plus the box
+  // height of the box centre (a fragment of the plate's text line).
   int MatchBox(const cv::Rect& box_px, const Pose2D& true_pose) const;
   // Whether plate `index` is visible at `true_pose`; `pixel` (optional) receives its projection.
   bool Visible(int index, const Pose2D& true_pose, cv::Point2d* pixel) const;

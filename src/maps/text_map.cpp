@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <tuple>
@@ -19,13 +20,17 @@ namespace {
 
 const char kHeaderComment[] = "# Text-landmark map (doorplates), format: docs/text-map-format.md\n";
 
-TextLandmark ReadLandmark(const YamlField& item) {
+TextLandmark ReadLandmark(const YamlField& item, const RoomIdGrammar& grammar) {
   item.RequireOnlyKeys({"index", "text", "x_m", "y_m", "yaw_rad", "height_m", "wall", "observations",
                         "position_stddev_m"});
   TextLandmark landmark;
   const YamlField text = item.Child("text");
   landmark.text = text.AsString();
   if (landmark.text.empty()) text.Fail("must not be empty");
+  if (!grammar.Accepts(landmark.text)) {
+    text.Fail("'" + landmark.text + "' (canonical '" + CanonicalRoomId(landmark.text) +
+              "') does not fit room_pattern '" + grammar.pattern() + "'");
+  }
   landmark.pose = {item.Child("x_m").AsDouble(), item.Child("y_m").AsDouble(), item.Child("yaw_rad").AsDouble()};
   landmark.height_m = item.NonNegative("height_m", landmark.height_m);
   item.Get("wall", &landmark.wall);
@@ -36,12 +41,12 @@ TextLandmark ReadLandmark(const YamlField& item) {
 }
 
 // Landmarks in index order; every index 0..n-1 exactly once.
-std::vector<TextLandmark> ReadLandmarks(const YamlField& list) {
+std::vector<TextLandmark> ReadLandmarks(const YamlField& list, const RoomIdGrammar& grammar) {
   const std::vector<YamlField> items = list.Items();
   std::vector<TextLandmark> landmarks(items.size());
   std::vector<int> seen_at(items.size(), -1);
   for (size_t k = 0; k < items.size(); ++k) {
-    TextLandmark landmark = ReadLandmark(items[k]);
+    TextLandmark landmark = ReadLandmark(items[k], grammar);
     const YamlField index_field = items[k].Child("index");
     const int index = index_field.AsInt();
     if (index < 0 || index >= static_cast<int>(items.size())) {
@@ -116,28 +121,38 @@ Vec2 PrincipalAxis(const std::vector<Vec2>& points) {
 std::vector<int> TextMap::Find(const std::string& text) const {
   std::vector<int> found;
   for (size_t i = 0; i < landmarks.size(); ++i) {
-    if (landmarks[i].text == text) found.push_back(static_cast<int>(i));
+    if (SameRoom(landmarks[i].text, text)) found.push_back(static_cast<int>(i));
   }
   return found;
 }
 
 std::vector<std::string> TextMap::Texts() const {
-  std::set<std::string> texts;
-  for (const TextLandmark& l : landmarks) texts.insert(l.text);
-  return {texts.begin(), texts.end()};
+  std::map<std::string, std::string> first_text;  // canonical form -> first printed text
+  for (const TextLandmark& l : landmarks) first_text.emplace(CanonicalRoomId(l.text), l.text);
+  std::vector<std::string> texts;
+  for (const auto& [canonical, text] : first_text) texts.push_back(text);
+  std::sort(texts.begin(), texts.end());
+  return texts;
 }
 
 TextMap ParseTextMap(const std::string& yaml_text, const std::string& source_name) {
   try {
     const YamlField root = YamlField::Parse(yaml_text, source_name);
-    root.RequireOnlyKeys({"format_version", "frame_id", "occupancy_map", "landmarks", "adjacent"});
+    root.RequireOnlyKeys({"format_version", "frame_id", "occupancy_map", "room_pattern", "landmarks", "adjacent"});
     TextMap map;
     const YamlField version = root.Child("format_version");
     if (version.AsInt() != 1) version.Fail("unsupported version " + version.AsString() + " (this reader knows 1)");
     root.Get("frame_id", &map.frame_id);
     if (map.frame_id.empty()) root.Child("frame_id").Fail("must not be empty");
     root.Get("occupancy_map", &map.occupancy_map);
-    map.landmarks = ReadLandmarks(root.Child("landmarks"));
+    root.Get("room_pattern", &map.room_pattern);
+    std::optional<RoomIdGrammar> grammar;
+    try {
+      grammar.emplace(map.room_pattern);
+    } catch (const std::invalid_argument& e) {
+      root.Child("room_pattern").Fail(e.what());  // only a pattern read from the file can be bad here
+    }
+    map.landmarks = ReadLandmarks(root.Child("landmarks"), *grammar);
     if (root.Has("adjacent")) map.adjacent = ReadAdjacent(root.Child("adjacent"), map.landmarks.size());
     return map;
   } catch (const YamlFieldError& e) {
@@ -159,6 +174,7 @@ std::string TextMapToYaml(const TextMap& map) {
   out << YAML::Key << "format_version" << YAML::Value << map.format_version;
   out << YAML::Key << "frame_id" << YAML::Value << YAML::DoubleQuoted << map.frame_id;
   out << YAML::Key << "occupancy_map" << YAML::Value << YAML::DoubleQuoted << map.occupancy_map;
+  out << YAML::Key << "room_pattern" << YAML::Value << YAML::DoubleQuoted << map.room_pattern;
   out << YAML::Key << "landmarks" << YAML::Value << YAML::BeginSeq;
   for (size_t i = 0; i < map.landmarks.size(); ++i) {
     const TextLandmark& l = map.landmarks[i];

@@ -1,7 +1,8 @@
 #include "doorplate_localization/mcl/plate_reading.h"
 
-#include <cctype>
 #include <cmath>
+
+#include "doorplate_localization/common/room_id.h"
 
 namespace doorplate_localization {
 
@@ -26,14 +27,6 @@ std::string ValidatePlateReading(const PlateReading& reading) {
   return "";
 }
 
-std::string CanonicalPlateText(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (unsigned char c : text) {
-    if (std::isspace(c) || c == '-') continue;
-    out.push_back(static_cast<char>(std::toupper(c)));
-  }
-  return out;
-}
+std::string CanonicalPlateText(const std::string& text) { return CanonicalRoomId(text); }
 
 }  // namespace doorplate_localization

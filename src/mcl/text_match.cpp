@@ -5,7 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "doorplate_localization/mcl/plate_reading.h"
+#include "doorplate_localization/common/room_id.h"
 
 namespace doorplate_localization {
 
@@ -24,7 +24,7 @@ TextMatcher::TextMatcher(const TextMatchOptions& options) : options_(options) {
   std::istringstream tokens(options.confusable_pairs);
   std::string token;
   while (tokens >> token) {
-    const std::string pair = CanonicalPlateText(token);
+    const std::string pair = CanonicalRoomId(token);
     if (pair.size() != 2) {
       throw std::invalid_argument("TextMatcher: confusable_pairs: expected two-character tokens like \"17\", got \"" +
                                   token + "\"");
@@ -59,7 +59,7 @@ double TextMatcher::SameLengthSimilarity(const std::string& a, const std::string
 }
 
 double TextMatcher::Similarity(const std::string& read, const std::string& truth) const {
-  const std::string a = CanonicalPlateText(read), b = CanonicalPlateText(truth);
+  const std::string a = CanonicalRoomId(read), b = CanonicalRoomId(truth);
   if (a.empty() || b.empty()) return 0.0;
   if (a == b) return 1.0;
   if (a.size() == b.size()) return SameLengthSimilarity(a, b, 1);
@@ -77,15 +77,16 @@ double TextMatcher::Similarity(const std::string& read, const std::string& truth
 
 double TextMatcher::MatchProbability(const std::string& read, double confidence, const std::string& truth) const {
   const double c = std::clamp(confidence, 0.0, 1.0);
-  if (CanonicalPlateText(read) == CanonicalPlateText(truth)) return c;
+  if (SameRoom(read, truth)) return c;
   return (1.0 - c) * Similarity(read, truth);
 }
 
 std::vector<LandmarkMatch> TextMatcher::Compatible(const TextMap& map, const std::string& read,
                                                    double confidence) const {
   std::vector<LandmarkMatch> matches;
+  const std::string canonical_read = CanonicalRoomId(read);  // compared once per landmark below
   for (size_t i = 0; i < map.landmarks.size(); ++i) {
-    const double p = MatchProbability(read, confidence, map.landmarks[i].text);
+    const double p = MatchProbability(canonical_read, confidence, map.landmarks[i].text);
     if (p > 0.0) matches.push_back({static_cast<int>(i), p});
   }
   return matches;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include <Eigen/Eigenvalues>
@@ -22,7 +23,6 @@ LocalizationScan ToLocalizationScan(const sensor_msgs::LaserScan& msg, const Pos
 }
 
 std::vector<PlateReading> ToPlateReadings(const TextDetectionArray& msg, const CameraAxis& camera,
-                                          const LocalizationScan* latest_scan, double max_range_bearing_error_rad,
                                           std::vector<std::string>* problems) {
   std::vector<PlateReading> readings;
   for (const TextDetection& d : msg.detections) {
@@ -30,8 +30,7 @@ std::vector<PlateReading> ToPlateReadings(const TextDetectionArray& msg, const C
     const double bearing_rad = camera.yaw_rad + camera.bearing_sign * d.bearing_rad;
     const PlateReading r = PlateReadingAt(
         d.text, d.confidence, std::isfinite(d.bearing_rad) ? bearing_rad : d.bearing_rad,  // NaN: for the check below
-        latest_scan != nullptr ? RangeAlongBearing(*latest_scan, bearing_rad, max_range_bearing_error_rad)
-                               : std::nullopt);
+        std::nullopt);
     const std::string problem = ValidatePlateReading(r);
     if (!problem.empty()) {
       if (problems != nullptr) problems->push_back("detection '" + d.text + "': " + problem);
@@ -101,6 +100,37 @@ geometry_msgs::PoseArray ToParticleCloudMsg(const std::vector<Particle>& particl
 std::string StateText(LocalizationState state, LostReason reason) {
   if (state != LocalizationState::kLost) return ToString(state);
   return std::string(ToString(state)) + ": " + ToString(reason);
+}
+
+std::string DescribePlateOutcome(const PlateReadingOutcome& outcome) {
+  const PlateReading& r = outcome.reading;
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  switch (outcome.disposition) {
+    case PlateDisposition::kWeighed: {
+      const PlateUpdateResult& u = outcome.result;
+      if (!u.used) {
+        out << "plate '" << r.text << "' not used: " << u.ignored_reason;
+        break;
+      }
+      out.precision(3);
+      out << "plate '" << r.text << "' at " << r.bearing_rad << " rad, range ";
+      if (r.range_m) out << std::setprecision(2) << *r.range_m << " m"; else out << "none";
+      out << std::setprecision(2) << ": explained " << u.explained_ratio << " (best cluster "
+          << u.best_cluster_explained_ratio << ")" << (u.contradicted_estimate ? ", CONTRADICTS the estimate" : "")
+          << ", " << u.reseeded_particles << " reseeded";
+      break;
+    }
+    case PlateDisposition::kUnknownRoomFirst:
+    case PlateDisposition::kUnknownRoom:
+      out << "room '" << r.text << "' is not in the text map";
+      break;
+    default:
+      out.precision(3);
+      out << "plate '" << r.text << "' at " << outcome.stamp_s << " s ignored (" << ToString(outcome.disposition)
+          << ")" << (outcome.detail.empty() ? "" : ": ") << outcome.detail;
+  }
+  return out.str();
 }
 
 }  // namespace doorplate_localization

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <set>
 #include <sstream>
+#include <string>
+#include <tuple>
 #include <utility>
 
 #include "doorplate_localization/sim/world_loader.h"
@@ -19,6 +21,28 @@ CorridorSimOptions LoadCorridorSimOptions(ros::NodeHandle& private_nh) {
     o.world = LoadWorldFile(o.world_file);
   } catch (const std::exception& e) {  // WorldFileError names the file and field
     throw ParameterError(nh.resolveName("world") + " = '" + o.world_file + "' cannot be used: " + e.what());
+  }
+
+  // The camera's image size and intrinsics: the world's unless overridden (e.g. a 1280 x 720 USB camera on
+  // a built-in world). fx/fy/cx/cy 0 = derived (fx from the field of view, fy = fx, centred principal point).
+  CameraOptions& camera = o.world.sensors.camera;
+  camera.width_px = ReadParam(nh, "camera/width_px", camera.width_px);
+  camera.height_px = ReadParam(nh, "camera/height_px", camera.height_px);
+  RequireParam(camera.width_px >= 16 && camera.width_px <= 8192, nh, "camera/width_px", "in [16, 8192]",
+               camera.width_px);
+  RequireParam(camera.height_px >= 16 && camera.height_px <= 8192, nh, "camera/height_px", "in [16, 8192]",
+               camera.height_px);
+  camera.horizontal_fov_deg = ReadParam(nh, "camera/horizontal_fov_deg", camera.horizontal_fov_deg);
+  RequireParam(camera.horizontal_fov_deg > 1.0 && camera.horizontal_fov_deg < 170.0, nh,
+               "camera/horizontal_fov_deg", "in (1, 170) degrees", camera.horizontal_fov_deg);
+  for (const auto& [name, field, limit] :
+       {std::tuple<const char*, double*, double>{"camera/fx_px", &camera.fx_px, 1e6},
+        {"camera/fy_px", &camera.fy_px, 1e6},
+        {"camera/cx_px", &camera.cx_px, camera.width_px - 1.0},
+        {"camera/cy_px", &camera.cy_px, camera.height_px - 1.0}}) {
+    *field = ReadParam(nh, name, *field);
+    RequireParam(std::isfinite(*field) && *field >= 0.0 && *field <= limit, nh, name,
+                 "in [0, " + std::to_string(limit) + "] pixels (0: derived)", *field);
   }
 
   // The robot's start: the world's unless overridden (e.g. to start a localization run somewhere else).

@@ -16,7 +16,9 @@ namespace doorplate_localization {
 struct CorridorSimOptions {
   std::string world_file;           // ~world (required): the world YAML, docs/world-format.md
   World world;                      // loaded from world_file; its sensor settings give the rates; its
-                                    // start pose overridden by ~start_x_m, ~start_y_m, ~start_theta_deg
+                                    // start pose overridden by ~start_x_m, ~start_y_m, ~start_theta_deg,
+                                    // its camera's size and intrinsics by ~camera/width_px, ~camera/height_px,
+                                    // ~camera/horizontal_fov_deg, ~camera/{fx,fy,cx,cy}_px
   SimulatorOptions simulator;       // ~seed, ~physics_step_s, ~max_linear_speed_mps, ~max_angular_speed_rps
   double real_time_factor = 1.0;    // sim seconds per wall second; 0 = as fast as possible
   bool publish_clock = true;        // publish /clock (run the graph with /use_sim_time true)

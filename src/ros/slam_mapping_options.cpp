@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "doorplate_localization/common/room_id.h"
 #include "doorplate_localization/slam/rbpf_slam_options.h"
 
 namespace doorplate_localization {
@@ -125,6 +126,14 @@ SlamMappingNodeOptions LoadSlamMappingOptions(const ros::NodeHandle& nh) {
   RequireParam(o.tf_timeout_s >= 0.0 && o.tf_timeout_s <= 10.0, nh, "tf_timeout_s", "in [0, 10] seconds",
                o.tf_timeout_s);
   o.use_text = ReadParam(nh, "use_text", o.use_text);
+  o.slam.room_pattern = ReadParam(nh, "room_pattern", o.slam.room_pattern);
+  try {
+    RoomIdGrammar check(o.slam.room_pattern);
+  } catch (const std::invalid_argument& e) {
+    throw ParameterError(nh.resolveName("room_pattern") + " must be an ECMAScript regex of the building's room "
+                         "numbers (canonical form, docs/text-map-format.md), got '" + o.slam.room_pattern + "': " +
+                         e.what());
+  }
   o.map_output_dir = ReadParam(nh, "map_output_dir", o.map_output_dir);
   if (o.map_output_dir.empty()) o.map_output_dir = DefaultOutputDir();
   o.map_name = ReadParam(nh, "map_name", o.map_name);

@@ -5,7 +5,9 @@
 //    map_update_interval, transform_publish_period, throttle_scans, base_frame, odom_frame, map_frame;
 //  - every option of the SLAM core by its name in the one option table (slam/rbpf_slam_options.h:
 //    TextSlamOptionNames(), the names doorplate_map_log / doorplate_map_bag take with --set), with `/`
-//    for `.`: ~num_particles, ~matcher/field_sigma_m, ~text/plate_sigma_m, ...
+//    for `.`: ~num_particles, ~matcher/field_sigma_m, ~text/plate_sigma_m, ...;
+//  - ~room_pattern: the building's room identifier format (TextSlamOptions::room_pattern), the same
+//    parameter name as the text extractor's.
 // A gmapping name and its core name are the same option: setting both is an error. gmapping parameters
 // that have no counterpart here (sigma, lstep, ogain, xmin, ...) are reported in `ignored_parameters`.
 #pragma once
@@ -21,7 +23,8 @@
 namespace doorplate_localization {
 
 struct SlamMappingNodeOptions {
-  TextSlamOptions slam;                     // the core's options (gmapping names mapped onto them)
+  TextSlamOptions slam;                     // the core's options (gmapping names mapped onto them);
+                                            // slam.room_pattern is ~room_pattern (written into the text map)
   std::string base_frame = "base_link";     // ~base_frame
   std::string odom_frame = "odom";          // ~odom_frame
   std::string map_frame = "map";            // ~map_frame

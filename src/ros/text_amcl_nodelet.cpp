@@ -1,19 +1,20 @@
-// TextAmclNodelet: Text AMCL (include/doorplate_localization/mcl/text_amcl.h) behind amcl's ROS interface,
-// so an amcl launch file works by changing the node type. Subscribes scan (sensor_msgs/LaserScan),
+// TextAmclNodelet: Text AMCL behind amcl's ROS interface, so an amcl launch file works by changing the node
+// type. Every callback is validate -> convert -> TextAmclSession (mcl/text_amcl_session.h: the one loop,
+// also run by `doorplate_eval localize` and the soak) -> publish. Subscribes scan (sensor_msgs/LaserScan),
 // initialpose (geometry_msgs/PoseWithCovarianceStamped), text_detections (TextDetectionArray) and, with
 // ~use_map_topic, map (nav_msgs/OccupancyGrid); else it loads ~map_file (and republishes it latched on map)
 // or calls the static_map service. Publishes amcl_pose (latched), particlecloud (latched, at most
 // ~gui_publish_rate), ~state (latched std_msgs/String: waiting_for_map | tracking | converged |
 // lost: <reason>), text_landmarks (latched MarkerArray) and tf global_frame -> odom_frame stamped scan stamp
 // + ~transform_tolerance. Services: global_localization, request_nomotion_update (std_srvs/Empty),
-// set_map (nav_msgs/SetMap). Odometry is the tf odom_frame -> base_frame at each scan's stamp (as amcl).
+// set_map (nav_msgs/SetMap). Odometry is the tf odom_frame -> base_frame at each scan's and each
+// detection array's stamp (as amcl); the session orders, ranges and weighs the plate readings.
 // Parameters: text_amcl_options.h, docs/parameters.md. Callbacks run on the nodelet's single-threaded
-// queue; mutex_ guards the filter against the services and timers all the same.
-// (~430 lines: one callback per amcl topic and service; the conversions are in amcl_conversions.)
+// queue; mutex_ guards the session against the services and timers all the same.
 #include <cmath>
 #include <memory>
 #include <mutex>
-#include <set>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -29,7 +30,7 @@
 #include <tf2_ros/transform_listener.h>
 
 #include "doorplate_localization/maps/map_io.h"
-#include "doorplate_localization/mcl/text_match.h"
+#include "doorplate_localization/mcl/text_amcl_session.h"
 #include "doorplate_localization/ros/amcl_conversions.h"
 #include "doorplate_localization/ros/map_conversions.h"
 #include "doorplate_localization/ros/pose_conversions.h"
@@ -100,7 +101,6 @@ class TextAmclNodelet : public nodelet::Nodelet {
     }
     try {
       text_map_ = std::make_shared<const TextMap>(doorplate_localization::LoadTextMap(options_.text_map_file));
-      matcher_ = std::make_unique<TextMatcher>(options_.setup.plate.text_match);
       NODELET_INFO("text amcl: %zu doorplates from %s", text_map_->landmarks.size(), options_.text_map_file.c_str());
       if (text_map_->frame_id != options_.global_frame_id) {
         NODELET_WARN("text amcl: %s: frame_id '%s' differs from global_frame_id '%s'; using it as %s",
@@ -114,17 +114,17 @@ class TextAmclNodelet : public nodelet::Nodelet {
     }
   }
 
-  // Builds the filter on a new map and starts it at the initial pose (amcl: ~initial_pose_*, updated by
-  // initialpose and ~save_pose_rate). Requires mutex_.
+  // Starts a session on a new map at the initial pose (amcl: ~initial_pose_*, updated by initialpose and
+  // ~save_pose_rate) or over the free space. Requires mutex_.
   bool UseMap(const OccupancyGrid& grid, const std::string& source) {
-    std::unique_ptr<TextAmcl> filter;  // the running filter stays if the new map cannot be used
+    std::unique_ptr<TextAmclSession> session;  // the running session stays if the new map cannot be used
     try {
-      filter = MakeTextAmcl(options_.setup, grid, text_map_);
+      session = std::make_unique<TextAmclSession>(ToSessionOptions(options_), grid, text_map_);
     } catch (const std::invalid_argument& e) {
       std::string problem = e.what();
       if (text_map_) {  // the map, or the text map with it? Without the text map:
         try {
-          filter = MakeTextAmcl(options_.setup, grid, nullptr);
+          session = std::make_unique<TextAmclSession>(ToSessionOptions(options_), grid, nullptr);
           NODELET_ERROR("%s cannot be used with the map from %s: %s; localizing with the laser alone",
                         options_.text_map_file.c_str(), source.c_str(), problem.c_str());
           text_map_.reset();
@@ -133,18 +133,12 @@ class TextAmclNodelet : public nodelet::Nodelet {
           problem = laser_only.what();
         }
       }
-      if (!filter) {
+      if (!session) {
         NODELET_ERROR("text amcl: the map from %s cannot be used: %s", source.c_str(), problem.c_str());
         return false;
       }
     }
-    filter_ = std::move(filter);
-    if (options_.start_with_global_localization) {
-      filter_->GlobalLocalization();
-    } else {
-      filter_->Initialize(options_.initial_pose, options_.initial_covariance);
-    }
-    has_transform_ = false;
+    session_ = std::move(session);
     NODELET_INFO("text amcl: map %dx%d at %.3f m from %s, %s laser model, %s; %d particles %s", grid.width,
                  grid.height, grid.resolution_m, source.c_str(), ToString(options_.setup.laser_model_type),
                  text_map_ ? "with doorplates" : "laser only", options_.setup.filter.max_particles,
@@ -155,7 +149,7 @@ class TextAmclNodelet : public nodelet::Nodelet {
 
   void OnMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (options_.first_map_only && filter_) return;
+    if (options_.first_map_only && session_) return;
     OccupancyGrid grid;
     const std::string problem = FromOccupancyGridMsg(*msg, &grid);
     if (!problem.empty()) {
@@ -204,20 +198,19 @@ class TextAmclNodelet : public nodelet::Nodelet {
 
   bool OnGlobalLocalization(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!filter_) {
+    if (!session_) {
       NODELET_WARN("%s: no map yet; ignored", global_srv_.getService().c_str());
       return true;
     }
-    filter_->GlobalLocalization();
-    has_transform_ = false;
-    NODELET_INFO("text amcl: global localization: %zu particles over the free space", filter_->particles().size());
+    session_->GlobalLocalization();
+    NODELET_INFO("text amcl: global localization: %zu particles over the free space", session_->particles().size());
     PublishFilter(ros::Time::now(), /*force_cloud=*/true);
     return true;
   }
 
   bool OnNoMotionUpdate(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (filter_) filter_->ForceUpdate();
+    if (session_) session_->RequestNoMotionUpdate();
     return true;
   }
 
@@ -232,14 +225,13 @@ class TextAmclNodelet : public nodelet::Nodelet {
     }
     options_.initial_pose = mean;  // also the start pose on the next map
     options_.initial_covariance = covariance;
-    if (!filter_) return;
-    filter_->Initialize(mean, covariance);
-    has_transform_ = false;
+    if (!session_) return;
+    session_->Initialize(mean, covariance);
     NODELET_INFO("text amcl: initial pose (%.3f, %.3f, %.3f)", mean.x_m, mean.y_m, mean.theta_rad);
     PublishFilter(ros::Time::now(), /*force_cloud=*/true);
   }
 
-  // validate -> tf (laser mount, odometry) -> convert -> filter -> publish.
+  // validate -> tf (laser mount, odometry) -> convert -> session -> publish.
   void OnScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
     const std::string& topic = scan_sub_.getTopic();
@@ -248,13 +240,10 @@ class TextAmclNodelet : public nodelet::Nodelet {
       NODELET_WARN_THROTTLE(2.0, "%s: %s; scan ignored", topic.c_str(), problem.c_str());
       return;
     }
-    if (!last_scan_stamp_.isZero() && msg->header.stamp < last_scan_stamp_) {
-      NODELET_WARN_THROTTLE(2.0, "%s: time went backwards (stamp %.3f s after %.3f s); scan ignored, "
-                            "continuing from it", topic.c_str(), msg->header.stamp.toSec(), last_scan_stamp_.toSec());
-      last_scan_stamp_ = msg->header.stamp;
+    if (!session_) {
+      NODELET_WARN_THROTTLE(10.0, "%s: no map yet; scan ignored", topic.c_str());
       return;
     }
-    last_scan_stamp_ = msg->header.stamp;
     Pose2D laser_in_base, base_in_odom;
     std::string tf_problem;
     if (!LookupPlanar(options_.base_frame_id, msg->header.frame_id, ros::Time(0), &laser_in_base, &tf_problem) ||
@@ -263,39 +252,37 @@ class TextAmclNodelet : public nodelet::Nodelet {
       NODELET_WARN_THROTTLE(2.0, "%s: %s; scan ignored", topic.c_str(), tf_problem.c_str());
       return;
     }
-    latest_scan_ = ToLocalizationScan(*msg, laser_in_base);
-    has_latest_scan_ = true;
-    if (!filter_) {
-      NODELET_WARN_THROTTLE(10.0, "%s: no map yet; scan ignored", topic.c_str());
-      return;
-    }
+    SessionUpdate update;
     try {
-      filter_->UpdateOdometry(base_in_odom);
-      if (filter_->UpdateLaser(latest_scan_)) {
-        map_to_odom_ = ToTransformStampedMsg(MapToOdom(filter_->Estimate().pose, base_in_odom),
-                                             options_.global_frame_id, options_.odom_frame_id, msg->header.stamp);
-        has_transform_ = true;
-        PublishFilter(msg->header.stamp, /*force_cloud=*/false);
-      }
+      update = session_->AddScan(msg->header.stamp.toSec(), base_in_odom, ToLocalizationScan(*msg, laser_in_base));
     } catch (const std::invalid_argument& e) {
       NODELET_WARN_THROTTLE(2.0, "%s: %s; scan ignored", topic.c_str(), e.what());
       return;
     }
-    if (options_.tf_broadcast && has_transform_) {
-      map_to_odom_.header.stamp = msg->header.stamp + ros::Duration(options_.transform_tolerance_s);
-      tf_broadcaster_->sendTransform(map_to_odom_);
+    if (!update.scan_ignored_reason.empty()) {
+      NODELET_WARN_THROTTLE(2.0, "%s: %s; scan ignored, continuing from it", topic.c_str(),
+                            update.scan_ignored_reason.c_str());
+    }
+    ReportPlates(update, detections_sub_.getTopic());
+    if (update.estimate_changed) PublishFilter(msg->header.stamp, /*force_cloud=*/!update.plates.empty());
+    const std::optional<Pose2D>& map_to_odom = session_->MapToOdom();
+    if (options_.tf_broadcast && map_to_odom) {
+      tf_broadcaster_->sendTransform(ToTransformStampedMsg(*map_to_odom, options_.global_frame_id,
+                                                           options_.odom_frame_id,
+                                                           msg->header.stamp +
+                                                               ros::Duration(options_.transform_tolerance_s)));
     }
   }
 
-  // validate -> tf (camera yaw) -> readings (range from the latest scan) -> filter -> publish.
+  // validate -> tf (camera yaw, odometry at the stamp) -> readings -> session -> publish.
   void OnDetections(const TextDetectionArray::ConstPtr& msg) {
     bool any = false;
     for (const TextDetection& d : msg->detections) any = any || IsPlateReport(d);
     if (!any) return;  // most images report no plate
     std::lock_guard<std::mutex> lock(mutex_);
     const std::string& topic = detections_sub_.getTopic();
-    if (!filter_) return;
-    if (!text_map_) {
+    if (!session_) return;
+    if (!session_->has_text_map()) {
       NODELET_WARN_ONCE("%s: doorplate readings are ignored: no usable text map (~text_map_file, ~use_text)",
                         topic.c_str());
       return;
@@ -316,48 +303,36 @@ class TextAmclNodelet : public nodelet::Nodelet {
                             msg->header.frame_id.c_str(), options_.base_frame_id.c_str(), axis_problem.c_str());
       return;
     }
-    // Bring the particles to where the reading was taken (amcl's request_nomotion_update): between scans, or
-    // while the laser is off, they still stand where the last scan left them.
+    std::vector<std::string> problems;
+    const std::vector<PlateReading> readings = ToPlateReadings(*msg, axis, &problems);
+    for (const std::string& p : problems) NODELET_WARN_THROTTLE(2.0, "%s: %s; ignored", topic.c_str(), p.c_str());
+    // The odometry at the readings' stamp (0: now), if tf has it yet; else the session keeps them until a
+    // scan's odometry reaches it.
+    const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
+    const double stamp_s = stamp.toSec();
     Pose2D base_in_odom;
     std::string odom_problem;
-    if (LookupPlanar(options_.odom_frame_id, options_.base_frame_id, msg->header.stamp, &base_in_odom, &odom_problem)) {
-      filter_->ForceUpdate();
-      filter_->UpdateOdometry(base_in_odom);
+    if (LookupPlanar(options_.odom_frame_id, options_.base_frame_id, stamp, &base_in_odom, &odom_problem)) {
+      ReportPlates(session_->AddOdometry(stamp_s, base_in_odom), topic);
     } else {
-      NODELET_WARN_THROTTLE(2.0, "%s: %s; the reading is weighed at the last scan's pose", topic.c_str(),
-                            odom_problem.c_str());
+      NODELET_DEBUG("%s: %s; the readings wait for the next scan's odometry", topic.c_str(), odom_problem.c_str());
     }
-    std::vector<std::string> problems;
-    const bool with_range = options_.text_use_laser_range && has_latest_scan_ &&
-                            std::fabs((msg->header.stamp - last_scan_stamp_).toSec()) <= options_.text_range_max_scan_age_s;
-    const std::vector<PlateReading> readings = ToPlateReadings(
-        *msg, axis, with_range ? &latest_scan_ : nullptr, options_.text_range_max_bearing_error_rad, &problems);
-    for (const std::string& p : problems) NODELET_WARN_THROTTLE(2.0, "%s: %s; ignored", topic.c_str(), p.c_str());
-    for (const PlateReading& reading : readings) UsePlate(reading, topic);
-    PublishFilter(msg->header.stamp, /*force_cloud=*/true);
+    const SessionUpdate update = session_->AddPlates(stamp_s, readings);
+    ReportPlates(update, topic);
+    if (update.estimate_changed) PublishFilter(stamp, /*force_cloud=*/true);
   }
 
-  void UsePlate(const PlateReading& reading, const std::string& topic) {
-    if (matcher_->Compatible(*text_map_, reading.text, reading.confidence).empty()) {
-      if (unknown_texts_.insert(reading.text).second) {
-        NODELET_WARN("%s: room '%s' is not in the text map %s; its readings are ignored", topic.c_str(),
-                     reading.text.c_str(), options_.text_map_file.c_str());
+  // Logs what became of the plate readings one session call resolved (unknown rooms once each).
+  void ReportPlates(const SessionUpdate& update, const std::string& topic) {
+    for (const PlateReadingOutcome& p : update.plates) {
+      if (p.disposition == PlateDisposition::kWeighed) {
+        NODELET_INFO("text amcl: %s", DescribePlateOutcome(p).c_str());
+      } else if (p.disposition == PlateDisposition::kUnknownRoomFirst) {
+        NODELET_WARN("%s: %s (text map %s); its readings are ignored", topic.c_str(), DescribePlateOutcome(p).c_str(),
+                     options_.text_map_file.c_str());
+      } else if (p.disposition == PlateDisposition::kStale || p.disposition == PlateDisposition::kInvalid) {
+        NODELET_WARN_THROTTLE(2.0, "%s: %s", topic.c_str(), DescribePlateOutcome(p).c_str());
       }
-      return;
-    }
-    try {
-      const PlateUpdateResult result = filter_->UpdatePlate(reading);
-      if (!result.used) {
-        NODELET_INFO("text amcl: plate '%s' not used: %s", reading.text.c_str(), result.ignored_reason.c_str());
-        return;
-      }
-      NODELET_INFO("text amcl: plate '%s' at %.3f rad, range %s: explained %.2f (best cluster %.2f)%s, %d reseeded",
-                   reading.text.c_str(), reading.bearing_rad,
-                   reading.range_m ? std::to_string(*reading.range_m).c_str() : "none", result.explained_ratio,
-                   result.best_cluster_explained_ratio, result.contradicted_estimate ? ", CONTRADICTS the estimate" : "",
-                   result.reseeded_particles);
-    } catch (const std::invalid_argument& e) {
-      NODELET_WARN_THROTTLE(2.0, "%s: %s; ignored", topic.c_str(), e.what());
     }
   }
 
@@ -379,18 +354,16 @@ class TextAmclNodelet : public nodelet::Nodelet {
 
   // amcl_pose and ~state; particlecloud when forced or due by ~gui_publish_rate. Requires mutex_.
   void PublishFilter(const ros::Time& stamp, bool force_cloud) {
-    if (!filter_ || !filter_->initialized()) return;
-    const PoseEstimate estimate = filter_->Estimate();
-    last_estimate_ = estimate;
-    has_estimate_ = true;
+    if (!session_) return;
+    const PoseEstimate& estimate = session_->Estimate();
     pose_pub_.publish(ToAmclPoseMsg(estimate, options_.global_frame_id, stamp));
     const ros::WallTime now = ros::WallTime::now();
     const double rate = options_.gui_publish_rate_hz;
     if (force_cloud || rate <= 0.0 || (now - last_cloud_time_).toSec() >= 1.0 / rate) {
-      cloud_pub_.publish(ToParticleCloudMsg(filter_->particles(), options_.global_frame_id, stamp));
+      cloud_pub_.publish(ToParticleCloudMsg(session_->particles(), options_.global_frame_id, stamp));
       last_cloud_time_ = now;
     }
-    const TextAmclStatus status = filter_->Status();
+    const TextAmclStatus& status = session_->Status();
     PublishState(StateText(status.state, status.lost_reason));
   }
 
@@ -406,29 +379,21 @@ class TextAmclNodelet : public nodelet::Nodelet {
   // amcl's save_pose_rate: the last estimate becomes ~initial_pose_* / ~initial_cov_* on the server.
   void SavePose(const ros::TimerEvent&) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!has_estimate_) return;
+    if (!session_) return;
+    const PoseEstimate& e = session_->Estimate();
     ros::NodeHandle& pnh = getPrivateNodeHandle();
-    pnh.setParam("initial_pose_x", last_estimate_.pose.x_m);
-    pnh.setParam("initial_pose_y", last_estimate_.pose.y_m);
-    pnh.setParam("initial_pose_a", last_estimate_.pose.theta_rad);
-    pnh.setParam("initial_cov_xx", last_estimate_.covariance(0, 0));
-    pnh.setParam("initial_cov_yy", last_estimate_.covariance(1, 1));
-    pnh.setParam("initial_cov_aa", last_estimate_.covariance(2, 2));
+    pnh.setParam("initial_pose_x", e.pose.x_m);
+    pnh.setParam("initial_pose_y", e.pose.y_m);
+    pnh.setParam("initial_pose_a", e.pose.theta_rad);
+    pnh.setParam("initial_cov_xx", e.covariance(0, 0));
+    pnh.setParam("initial_cov_yy", e.covariance(1, 1));
+    pnh.setParam("initial_cov_aa", e.covariance(2, 2));
   }
 
   TextAmclNodeOptions options_;
   std::shared_ptr<const TextMap> text_map_;  // null: laser only
-  std::unique_ptr<TextMatcher> matcher_;     // set with text_map_
-  std::set<std::string> unknown_texts_;      // rooms read that are not in the text map (warned once each)
   std::mutex mutex_;                         // guards everything below
-  std::unique_ptr<TextAmcl> filter_;         // null until a map arrives
-  LocalizationScan latest_scan_;
-  bool has_latest_scan_ = false;
-  ros::Time last_scan_stamp_;
-  geometry_msgs::TransformStamped map_to_odom_;
-  bool has_transform_ = false;
-  PoseEstimate last_estimate_;
-  bool has_estimate_ = false;
+  std::unique_ptr<TextAmclSession> session_; // null until a map arrives
   ros::WallTime last_cloud_time_;
   std::string last_state_;
   tf2_ros::Buffer tf_buffer_;

@@ -194,4 +194,16 @@ TextAmclNodeOptions LoadTextAmclOptions(const ros::NodeHandle& nh) {
   return o;
 }
 
+TextAmclSessionOptions ToSessionOptions(const TextAmclNodeOptions& options) {
+  TextAmclSessionOptions o;
+  o.setup = options.setup;
+  o.start_with_global_localization = options.start_with_global_localization;
+  o.initial_pose = options.initial_pose;
+  o.initial_covariance = options.initial_covariance;
+  o.text_use_laser_range = options.text_use_laser_range;
+  o.text_range_max_bearing_error_rad = options.text_range_max_bearing_error_rad;
+  o.text_range_max_scan_age_s = options.text_range_max_scan_age_s;
+  return o;
+}
+
 }  // namespace doorplate_localization

@@ -12,6 +12,7 @@
 #include <ros/node_handle.h>
 
 #include "doorplate_localization/common/geometry2d.h"
+#include "doorplate_localization/mcl/text_amcl_session.h"
 #include "doorplate_localization/mcl/text_amcl_setup.h"
 #include "doorplate_localization/ros/param_reader.h"
 
@@ -54,5 +55,8 @@ struct TextAmclNodeOptions {
 // parameter, e.g. "/amcl/kld_err must be finite and > 0, got 0", "/amcl/odom_model_type must be
 // 'diff' or 'diff-corrected', got omni".
 TextAmclNodeOptions LoadTextAmclOptions(const ros::NodeHandle& private_nh);
+
+// The session's options from the node's: the filter, the start pose and the plate range rule.
+TextAmclSessionOptions ToSessionOptions(const TextAmclNodeOptions& options);
 
 }  // namespace doorplate_localization

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 
 #include <nodelet/nodelet.h>
@@ -31,6 +32,7 @@ class TextExtractorNodelet : public nodelet::Nodelet {
     ros::NodeHandle& pnh = getPrivateNodeHandle();
     try {
       options_ = LoadTextExtractorOptions(pnh);
+      band_geometry_ = LoadBandGeometryOptions(pnh);
       extractor_ = std::make_unique<TextExtractor>(options_);  // loads the Tesseract model
     } catch (const std::exception& e) {
       NODELET_FATAL("%s", e.what());
@@ -94,12 +96,28 @@ class TextExtractorNodelet : public nodelet::Nodelet {
       return;
     }
     std::lock_guard<std::mutex> lock(mutex_);
-    if (has_geometry_ && geometry.fx_px == options_.tracker.fx_px && geometry.cx_px == options_.tracker.cx_px) {
+    TextExtractorOptions options = options_;
+    try {
+      if (band_geometry_) {  // ~detector/band_from_geometry: the band from this camera's intrinsics
+        BandGeometryOptions band = *band_geometry_;
+        band.image_height_px = geometry.height_px;
+        band.fy_px = info->K[4];
+        band.cy_px = info->K[5];
+        options.detector.band = BandFromGeometry(band);
+      }
+    } catch (const std::exception& e) {
+      NODELET_ERROR_THROTTLE(5.0, "%s: no band from geometry: %s", info_topic_.c_str(), e.what());
+      return;
+    }
+    const bool same_band = options.detector.band.top_px == options_.detector.band.top_px &&
+                           options.detector.band.bottom_px == options_.detector.band.bottom_px;
+    if (has_geometry_ && same_band && geometry.fx_px == options_.tracker.fx_px &&
+        geometry.cx_px == options_.tracker.cx_px) {
       geometry_ = geometry;
       return;
     }
-    // The tracker's bearings and centre line come from fx, cx: rebuild the extractor (normally once).
-    TextExtractorOptions options = options_;
+    // The tracker's bearings and centre line come from fx, cx (and the band may come from fy, cy): rebuild
+    // the extractor (normally once).
     options.tracker.fx_px = geometry.fx_px;
     options.tracker.cx_px = geometry.cx_px;
     try {
@@ -112,8 +130,11 @@ class TextExtractorNodelet : public nodelet::Nodelet {
     options_ = options;
     geometry_ = geometry;
     has_geometry_ = true;
-    NODELET_INFO("text extractor: %s: %dx%d, fx %.2f px, cx %.2f px", info_topic_.c_str(), geometry.width_px,
-                 geometry.height_px, geometry.fx_px, geometry.cx_px);
+    NODELET_INFO("text extractor: %s: %dx%d, fx %.2f px, cx %.2f px%s", info_topic_.c_str(), geometry.width_px,
+                 geometry.height_px, geometry.fx_px, geometry.cx_px,
+                 band_geometry_ ? (", band rows " + std::to_string(options_.detector.band.top_px) + "-" +
+                                   std::to_string(options_.detector.band.bottom_px) + " from geometry").c_str()
+                                : "");
   }
 
   // validate → convert → core → publish.
@@ -155,6 +176,7 @@ class TextExtractorNodelet : public nodelet::Nodelet {
   }
 
   TextExtractorOptions options_;  // tracker.fx_px / cx_px: from the last camera_info used
+  std::optional<BandGeometryOptions> band_geometry_;  // set: the band comes from each camera_info
   std::unique_ptr<TextExtractor> extractor_;
   std::mutex mutex_;  // guards extractor_, options_, geometry_, has_geometry_
   CameraGeometry geometry_;

@@ -3,11 +3,12 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
-#include <regex>
 #include <sstream>
 #include <stdexcept>
 
 #include <xmlrpcpp/XmlRpcValue.h>
+
+#include "doorplate_localization/common/room_id.h"
 
 namespace doorplate_localization {
 namespace {
@@ -98,6 +99,7 @@ void ReadDetector(const ros::NodeHandle& nh, MserBandDetectorOptions& d) {
   g.min_line_aspect = Read(nh, "detector/grouping/min_line_aspect", g.min_line_aspect, AtLeast(0.0));
   g.max_line_aspect = Read(nh, "detector/grouping/max_line_aspect", g.max_line_aspect, AtLeast(g.min_line_aspect));
   d.box_padding_to_height = Read(nh, "detector/box_padding_to_height", d.box_padding_to_height, AtLeast(0.0));
+  d.reference_width_px = Read(nh, "detector/reference_width_px", d.reference_width_px, AtLeast(0));
   d.nms_enabled = ReadParam(nh, "detector/nms_enabled", d.nms_enabled);
   d.nms_max_iou = Read(nh, "detector/nms_max_iou", d.nms_max_iou, Closed(0.0, 1.0));
 }
@@ -125,13 +127,58 @@ void ReadOcr(const ros::NodeHandle& nh, TesseractOcrOptions& o) {
   }
 }
 
-void ReadValidator(const ros::NodeHandle& nh, PlateReadingValidatorOptions& v) {
-  v.pattern = ReadParam(nh, "validator/pattern", v.pattern);
+// ~detector_type / ~recognizer_type and the learned models' options (db_text_detector.h,
+// ppocr_recognizer.h). A learned model that is chosen must be installed: checked here, naming the file.
+void ReadModels(const ros::NodeHandle& nh, TextExtractorOptions& o) {
+  const std::string detector = ReadParam(nh, "detector_type", ToString(o.detector_type));
+  const std::string recognizer = ReadParam(nh, "recognizer_type", ToString(o.recognizer_type));
   try {
-    std::regex(v.pattern, std::regex::ECMAScript);
-  } catch (const std::regex_error& e) {
-    throw ParameterError(nh.resolveName("validator/pattern") + " must be an ECMAScript regex, got '" + v.pattern +
-                         "': " + e.what());
+    o.detector_type = ParseTextDetectorType(detector, nh.resolveName("detector_type"));
+    o.recognizer_type = ParseTextRecognizerType(recognizer, nh.resolveName("recognizer_type"));
+  } catch (const std::invalid_argument& e) {
+    throw ParameterError(e.what());
+  }
+  const std::string model_dir = ReadParam(nh, "model_dir", std::string());
+  o.db_detector.model_dir = o.ppocr.model_dir = model_dir;
+  DbTextDetectorOptions& d = o.db_detector;
+  d.target_short_side_px = Read(nh, "db/target_short_side_px", d.target_short_side_px, AtLeast(32));
+  d.max_input_side_px = Read(nh, "db/max_input_side_px", d.max_input_side_px, AtLeast(d.target_short_side_px));
+  d.binary_threshold = Read(nh, "db/binary_threshold", d.binary_threshold,
+                            {[](double v) { return v > 0.0 && v < 1.0; }, "in (0, 1)"});
+  d.box_threshold = Read(nh, "db/box_threshold", d.box_threshold,
+                         {[](double v) { return v > 0.0 && v < 1.0; }, "in (0, 1)"});
+  d.unclip_ratio = Read(nh, "db/unclip_ratio", d.unclip_ratio, Above(0.0));
+  d.min_box_side_px = Read(nh, "db/min_box_side_px", d.min_box_side_px, AtLeast(1));
+  PpOcrRecognizerOptions& r = o.ppocr;
+  r.allowed_characters = ReadParam(nh, "ppocr/allowed_characters", r.allowed_characters);
+  r.min_confidence = Read(nh, "ppocr/min_confidence", r.min_confidence, Closed(0.0, 1.0));
+  o.ocr.min_confidence = Read(nh, "ocr/min_confidence", o.ocr.min_confidence, Closed(0.0, 1.0));
+  const std::string dir = ResolveOcrModelDir(model_dir);
+  const bool wants_models = o.detector_type == TextDetectorType::kDb ||
+                            o.recognizer_type == TextRecognizerType::kPpOcr;
+  const std::string probe = dir + (o.recognizer_type == TextRecognizerType::kPpOcr ? "/ppocrv4_rec_dict.txt"
+                                                                                  : "/ppocrv4_det.onnx");
+  if (wants_models && !std::ifstream(probe).good()) {
+    throw ParameterError(nh.resolveName("detector_type") + " = '" + detector + "', " +
+                         nh.resolveName("recognizer_type") + " = '" + recognizer + "' need the learned models, but " +
+                         probe + " is not there (" + nh.resolveName("model_dir") + " = '" + model_dir +
+                         "'; install them with scripts/fetch_ocr_models.sh)");
+  }
+}
+
+void ReadValidator(const ros::NodeHandle& nh, PlateReadingValidatorOptions& v) {
+  // ~room_pattern (the name the mapping nodelet shares); ~validator/pattern is its older name.
+  if (nh.hasParam("room_pattern") && nh.hasParam("validator/pattern")) {
+    throw ParameterError(nh.resolveName("room_pattern") + " and " + nh.resolveName("validator/pattern") +
+                         " are the same option (the older name): set only one");
+  }
+  const std::string name = nh.hasParam("validator/pattern") ? "validator/pattern" : "room_pattern";
+  v.pattern = ReadParam(nh, name, v.pattern);
+  try {
+    RoomIdGrammar check(v.pattern);
+  } catch (const std::invalid_argument& e) {
+    throw ParameterError(nh.resolveName(name) + " must be an ECMAScript regex of the building's room numbers "
+                         "(canonical form, docs/text-map-format.md), got '" + v.pattern + "': " + e.what());
   }
   v.known_rooms = ReadStringList(nh, "validator/known_rooms");
   v.max_edit_distance = Read(nh, "validator/max_edit_distance", v.max_edit_distance, AtLeast(0));
@@ -149,15 +196,34 @@ void ReadTracker(const ros::NodeHandle& nh, PlateTrackerOptions& t) {
   t.max_height_ratio = Read(nh, "tracker/max_height_ratio", t.max_height_ratio, AtLeast(1.0));
   t.max_missed_frames = Read(nh, "tracker/max_missed_frames", t.max_missed_frames, AtLeast(0));
   t.min_voted_frames = Read(nh, "tracker/min_voted_frames", t.min_voted_frames, AtLeast(1));
+  t.read_every_n_frames = Read(nh, "tracker/read_every_n_frames", t.read_every_n_frames, AtLeast(1));
+  t.max_readings_per_track = Read(nh, "tracker/max_readings_per_track", t.max_readings_per_track, AtLeast(0));
+  t.enough_votes = Read(nh, "tracker/enough_votes", t.enough_votes, AtLeast(0));
 }
 
 }  // namespace
+
+std::optional<BandGeometryOptions> LoadBandGeometryOptions(const ros::NodeHandle& nh) {
+  if (!ReadParam(nh, "detector/band_from_geometry", false)) return std::nullopt;
+  BandGeometryOptions g;
+  const std::string p = "detector/band_geometry/";
+  g.mount_height_m = Read(nh, p + "camera_height_m", g.mount_height_m, Above(0.0));
+  g.pitch_up_deg = Read(nh, p + "camera_pitch_up_deg", g.pitch_up_deg, Closed(-80.0, 80.0));
+  g.text_bottom_min_m = Read(nh, p + "text_bottom_min_m", g.text_bottom_min_m, AtLeast(0.0));
+  g.text_top_max_m = Read(nh, p + "text_top_max_m", g.text_top_max_m, Above(g.text_bottom_min_m));
+  g.min_distance_m = Read(nh, p + "min_distance_m", g.min_distance_m, Above(0.0));
+  g.max_distance_m = Read(nh, p + "max_distance_m", g.max_distance_m, AtLeast(g.min_distance_m));
+  g.margin_px = Read(nh, p + "margin_px", g.margin_px, AtLeast(0.0));
+  return g;
+}
 
 TextExtractorOptions LoadTextExtractorOptions(const ros::NodeHandle& nh) {
   TextExtractorOptions o;
   ReadDetector(nh, o.detector);
   ReadOcr(nh, o.ocr);
+  ReadModels(nh, o);
   ReadValidator(nh, o.validator);
+  UseReadingScheduleFor(o.recognizer_type, &o.tracker);  // the recogniser's schedule; parameters override it
   ReadTracker(nh, o.tracker);
   // 0 is legal for the core but would make a node that never reads anything.
   o.max_regions_per_frame = Read(nh, "max_regions_per_frame", o.max_regions_per_frame, AtLeast(1));

@@ -69,10 +69,11 @@ CameraIntrinsics IntrinsicsFromOptions(const CameraOptions& options) {
   CameraIntrinsics k;
   k.width_px = options.width_px;
   k.height_px = options.height_px;
-  k.fx_px = 0.5 * options.width_px / std::tan(0.5 * options.horizontal_fov_deg * kPi / 180.0);
-  k.fy_px = k.fx_px;
-  k.cx_px = 0.5 * (options.width_px - 1);
-  k.cy_px = 0.5 * (options.height_px - 1);
+  k.fx_px = options.fx_px > 0.0 ? options.fx_px
+                                : 0.5 * options.width_px / std::tan(0.5 * options.horizontal_fov_deg * kPi / 180.0);
+  k.fy_px = options.fy_px > 0.0 ? options.fy_px : k.fx_px;
+  k.cx_px = options.cx_px > 0.0 ? options.cx_px : 0.5 * (options.width_px - 1);
+  k.cy_px = options.cy_px > 0.0 ? options.cy_px : 0.5 * (options.height_px - 1);
   return k;
 }
 
@@ -85,6 +86,10 @@ CameraRenderer::CameraRenderer(const World& world, const CameraOptions& options)
   }
   if (!(options.horizontal_fov_deg > 1.0 && options.horizontal_fov_deg < 170.0)) {
     fail("camera horizontal_fov_deg must be in (1, 170)");
+  }
+  if (!(options.fx_px >= 0.0) || !(options.fy_px >= 0.0) || !(options.cx_px >= 0.0) || !(options.cy_px >= 0.0) ||
+      options.cx_px > options.width_px || options.cy_px > options.height_px) {
+    fail("camera fx_px, fy_px must be >= 0 (0: derived), cx_px, cy_px in [0, width_px], [0, height_px]");
   }
   if (options.side != "left" && options.side != "right") {
     fail("camera side must be 'left' or 'right', got '" + options.side + "'");
@@ -192,8 +197,10 @@ double CameraRenderer::RenderUnpitchedTransposed(const Pose2D& robot_pose, cv::M
       const double s1 = std::fabs(denom1) < 1e-12 ? s + 1.0 : (xn1 * za - xa) / denom1;
       const double ray_norm = std::sqrt(1.0 + xn * xn);
       const double cos_incidence = std::fabs(dx - dz * xn) / (length * ray_norm);
+      const double lit = world_.lighting.empty() ? 1.0 : world_.LightingGain(
+          surface.segment.a + std::clamp(s, 0.0, 1.0) * (surface.segment.b - surface.segment.a));
       const Hit hit{depth, std::clamp(s, 0.0, 1.0), std::min(std::fabs(s1 - s) * length, 1.0),
-                    DistanceShade(depth * ray_norm) * (0.8 + 0.2 * cos_incidence), static_cast<int>(si)};
+                    lit * DistanceShade(depth * ray_norm) * (0.8 + 0.2 * cos_incidence), static_cast<int>(si)};
       Hit* list = &hits[static_cast<std::size_t>(c) * kMaxHitsPerColumn];
       int& n = hit_count[c];
       if (n == kMaxHitsPerColumn && depth >= list[n - 1].depth_m) continue;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 namespace doorplate_localization {
@@ -19,9 +20,30 @@ int HersheyFace(SignFont font) {
     case SignFont::kDuplex: return cv::FONT_HERSHEY_DUPLEX;
     case SignFont::kComplex: return cv::FONT_HERSHEY_COMPLEX;
     case SignFont::kTriplex: return cv::FONT_HERSHEY_TRIPLEX;
+    case SignFont::kPlain: return cv::FONT_HERSHEY_PLAIN;
+    case SignFont::kComplexSmall: return cv::FONT_HERSHEY_COMPLEX_SMALL;
+    case SignFont::kScriptSimplex: return cv::FONT_HERSHEY_SCRIPT_SIMPLEX;
+    case SignFont::kScriptComplex: return cv::FONT_HERSHEY_SCRIPT_COMPLEX;
     case SignFont::kSimplex: break;
   }
   return cv::FONT_HERSHEY_SIMPLEX;
+}
+
+std::string SignName(const TextSign& sign, std::size_t index) {
+  return "signs[" + std::to_string(index) + "] ('" + sign.text + "')";
+}
+
+// The photographed face, stretched to w × h texels (area averaging when shrinking).
+cv::Mat ImageFace(const TextSign& sign, std::size_t index, int w, int h) {
+  const cv::Mat photo = cv::imread(sign.image_path, cv::IMREAD_COLOR);
+  if (photo.empty()) {
+    throw std::invalid_argument("CameraRenderer: world " + SignName(sign, index) + ".image: cannot read image '" +
+                                sign.image_path + "'");
+  }
+  cv::Mat face;
+  const bool shrink = w < photo.cols && h < photo.rows;
+  cv::resize(photo, face, cv::Size(w, h), 0, 0, shrink ? cv::INTER_AREA : cv::INTER_CUBIC);
+  return face;
 }
 
 std::vector<std::string> SplitLines(const std::string& text) {
@@ -32,23 +54,15 @@ std::vector<std::string> SplitLines(const std::string& text) {
   return lines;
 }
 
-}  // namespace
-
-std::vector<cv::Mat> MakeSignPyramid(const TextSign& sign, std::size_t index) {
-  if (!(sign.width_m > 0.0) || !(sign.height_m > 0.0)) {
-    throw std::invalid_argument("CameraRenderer: world signs[" + std::to_string(index) + "] ('" + sign.text +
-                                "'): width_m and height_m must be > 0");
-  }
-  const double px_per_m = std::min(kSignPxPerM, kMaxSignTexturePx / std::max(sign.width_m, sign.height_m));
-  const int w = std::max(8, static_cast<int>(std::lround(sign.width_m * px_per_m)));
-  const int h = std::max(8, static_cast<int>(std::lround(sign.height_m * px_per_m)));
+// Filled background, thin border in the text colour, text lines centred.
+cv::Mat DrawTextFace(const TextSign& sign, double px_per_m, int w, int h) {
   const cv::Scalar fg(sign.foreground[2], sign.foreground[1], sign.foreground[0]);
   cv::Mat texture(h, w, CV_8UC3, cv::Scalar(sign.background[2], sign.background[1], sign.background[0]));
   const int border_px = std::max(1, static_cast<int>(std::lround(0.004 * px_per_m)));
   cv::rectangle(texture, cv::Rect(0, 0, w, h), fg, 2 * border_px);  // centred on the edge: half shows
 
   const std::vector<std::string> lines = SplitLines(sign.text);
-  const int face = HersheyFace(sign.font);
+  const int face = HersheyFace(sign.font) | (sign.italic ? cv::FONT_ITALIC : 0);
   int baseline = 0;
   const double cap_unit = cv::getTextSize("H", face, 1.0, 1, &baseline).height;
   double width_unit = 0.0;
@@ -59,8 +73,10 @@ std::vector<cv::Mat> MakeSignPyramid(const TextSign& sign, std::size_t index) {
     const int n = static_cast<int>(lines.size());
     const double block_units = n + 0.6 * (n - 1);  // line gap: 0.6 cap heights
     const double fill = n == 1 ? 0.33 : 0.6;  // 4 cm digits on a 12 cm plate
-    double scale = std::min(fill * h / (cap_unit * block_units), 0.84 * w / width_unit);
-    const int thickness = std::max(1, static_cast<int>(std::lround(0.13 * cap_unit * scale)));
+    const double block_px = sign.text_height_m > 0.0 ? sign.text_height_m * px_per_m * block_units : fill * h;
+    double scale = std::min(block_px / (cap_unit * block_units), 0.84 * w / width_unit);
+    const int thickness =
+        std::max(1, static_cast<int>(std::lround(sign.stroke_to_cap_height * cap_unit * scale)));
     for (const std::string& line : lines) {  // thick strokes widen the text: shrink to fit
       const double line_w = cv::getTextSize(line, face, scale, thickness, &baseline).width;
       if (line_w > 0.9 * w) scale *= 0.9 * w / line_w;
@@ -73,7 +89,26 @@ std::vector<cv::Mat> MakeSignPyramid(const TextSign& sign, std::size_t index) {
       cv::putText(texture, lines[i], origin, face, scale, fg, thickness, cv::LINE_AA);
     }
   }
-  std::vector<cv::Mat> levels{texture};
+  return texture;
+}
+
+}  // namespace
+
+std::vector<cv::Mat> MakeSignPyramid(const TextSign& sign, std::size_t index) {
+  if (!(sign.width_m > 0.0) || !(sign.height_m > 0.0) || !(sign.text_height_m >= 0.0) ||
+      !(sign.stroke_to_cap_height > 0.0)) {
+    throw std::invalid_argument("CameraRenderer: world " + SignName(sign, index) +
+                                ": width_m, height_m and stroke_to_cap_height must be > 0, text_height_m >= 0");
+  }
+  const double px_per_m = std::min(kSignPxPerM, kMaxSignTexturePx / std::max(sign.width_m, sign.height_m));
+  const int w = std::max(8, static_cast<int>(std::lround(sign.width_m * px_per_m)));
+  const int h = std::max(8, static_cast<int>(std::lround(sign.height_m * px_per_m)));
+  std::vector<cv::Mat> levels;
+  if (!sign.image_path.empty()) {
+    levels.push_back(ImageFace(sign, index, w, h));
+  } else {
+    levels.push_back(DrawTextFace(sign, px_per_m, w, h));
+  }
   while (std::min(levels.back().cols, levels.back().rows) >= 4 && levels.size() < 12) {
     cv::Mat smaller;
     cv::pyrDown(levels.back(), smaller);

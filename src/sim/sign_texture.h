@@ -11,8 +11,9 @@
 
 namespace doorplate_localization {
 
-// Draws a sign flat (filled background, thin border, text lines centred) at up to 1500 px/m and returns its
-// mip pyramid (level 0 full size, each next level half). Throws std::invalid_argument naming signs[index].
+// Draws a sign flat (filled background, thin border, text lines centred; or its image_path photo stretched
+// to its size) at up to 1500 px/m and returns its mip pyramid (level 0 full size, each next level half).
+// Throws std::invalid_argument naming signs[index] (and the image file if it cannot be read).
 std::vector<cv::Mat> MakeSignPyramid(const TextSign& sign, std::size_t index);
 
 // Draws a sign into column rows [first, last), seen at `u_m` metres from its left edge (as read). Row r

@@ -1,6 +1,7 @@
 #include "doorplate_localization/sim/world.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace doorplate_localization {
 namespace {
@@ -53,6 +54,24 @@ Vec2 World::WallNormal(int wall_index, bool left_side) const {
 
 Vec2 World::CorridorNormal(int wall_index) const {
   return WallNormal(wall_index, walls.at(wall_index).corridor_side_left);
+}
+
+double World::LightingGain(const Vec2& point) const {
+  double gain = 1.0;
+  for (const LightZone& zone : lighting) {
+    // Distance outside the box (0 inside) and position across it along the zone's axis.
+    const double dx = std::max({zone.min.x - point.x, point.x - zone.max.x, 0.0});
+    const double dy = std::max({zone.min.y - point.y, point.y - zone.max.y, 0.0});
+    const double outside_m = std::hypot(dx, dy);
+    if (outside_m > 0.0 && !(outside_m < zone.edge_m)) continue;
+    const double lo = zone.axis_x ? zone.min.x : zone.min.y, hi = zone.axis_x ? zone.max.x : zone.max.y;
+    const double at = zone.axis_x ? point.x : point.y;
+    const double t = hi > lo ? std::clamp((at - lo) / (hi - lo), 0.0, 1.0) : 0.0;
+    const double zone_gain = zone.gain + t * (zone.gain_at_max - zone.gain);
+    const double weight = outside_m > 0.0 ? 1.0 - outside_m / zone.edge_m : 1.0;
+    gain *= 1.0 + weight * (zone_gain - 1.0);
+  }
+  return gain;
 }
 
 void BuildSurfaces(World& world) {

@@ -1,9 +1,12 @@
 // World file reader: YAML (docs/world-format.md) → World, validating every field.
 #include "doorplate_localization/sim/world_loader.h"
 
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
+
+#include <opencv2/imgcodecs.hpp>
 
 #include "doorplate_localization/common/yaml_reader.h"
 #include "world_sensor_fields.h"
@@ -26,13 +29,47 @@ int LookUp(const std::map<std::string, int>& index, const YamlField& field, cons
 }
 
 SignFont ParseFont(const YamlField& field) {
-  static const std::map<std::string, SignFont> kFonts = {{"simplex", SignFont::kSimplex},
-                                                         {"duplex", SignFont::kDuplex},
-                                                         {"complex", SignFont::kComplex},
-                                                         {"triplex", SignFont::kTriplex}};
+  static const std::map<std::string, SignFont> kFonts = {
+      {"simplex", SignFont::kSimplex},          {"duplex", SignFont::kDuplex},
+      {"complex", SignFont::kComplex},          {"triplex", SignFont::kTriplex},
+      {"plain", SignFont::kPlain},              {"complex_small", SignFont::kComplexSmall},
+      {"script_simplex", SignFont::kScriptSimplex}, {"script_complex", SignFont::kScriptComplex}};
   const auto it = kFonts.find(field.AsString());
-  if (it == kFonts.end()) field.Fail("font must be one of simplex, duplex, complex, triplex");
+  if (it == kFonts.end()) {
+    field.Fail("font must be one of simplex, duplex, complex, triplex, plain, complex_small, script_simplex, "
+               "script_complex");
+  }
   return it->second;
+}
+
+// `image`: a path relative to the world file's folder; the file must decode (PNG, JPG, ... via OpenCV).
+std::string ParseImagePath(const YamlField& field, const std::string& source_name) {
+  const std::filesystem::path given(field.AsString());
+  if (given.empty()) field.Fail("image path must not be empty");
+  const std::filesystem::path path =
+      given.is_absolute() ? given : std::filesystem::path(source_name).parent_path() / given;
+  if (cv::imread(path.string(), cv::IMREAD_COLOR).empty()) {
+    field.Fail("cannot read image '" + path.string() + "' (missing, or not an image OpenCV decodes)");
+  }
+  return path.string();
+}
+
+void ParseLightZone(const YamlField& f, World* world) {
+  f.RequireOnlyKeys({"min", "max", "gain", "gain_at_max", "axis", "edge_m"});
+  LightZone zone;
+  const auto lo = f.Child("min").AsDoubles(2), hi = f.Child("max").AsDoubles(2);
+  zone.min = {lo[0], lo[1]};
+  zone.max = {hi[0], hi[1]};
+  if (!(hi[0] >= lo[0] && hi[1] >= lo[1])) f.Child("max").Fail("must be >= min in x and y");
+  zone.gain = f.NonNegative("gain", zone.gain);
+  zone.gain_at_max = f.NonNegative("gain_at_max", zone.gain);
+  if (zone.gain > 10.0 || zone.gain_at_max > 10.0) f.Fail("gain and gain_at_max must be in [0, 10]");
+  std::string axis = "x";
+  f.Get("axis", &axis);
+  if (axis != "x" && axis != "y") f.Child("axis").Fail("must be 'x' or 'y'");
+  zone.axis_x = axis == "x";
+  zone.edge_m = f.NonNegative("edge_m", zone.edge_m);
+  world->lighting.push_back(zone);
 }
 
 void ParseWall(const YamlField& f, World* world, Indexes* idx) {
@@ -99,7 +136,7 @@ void ParseDoor(const YamlField& f, World* world, Indexes* idx) {
 }
 
 // Sign appearance fields shared by plates, distractors and door_rows' `plate`.
-void ParseSignLook(const YamlField& f, TextSign* sign) {
+void ParseSignLook(const YamlField& f, const std::string& source_name, TextSign* sign) {
   sign->center_height_m = f.Positive("center_height_m", sign->center_height_m);
   if (f.Has("size_m")) {
     const auto size = f.Child("size_m").AsDoubles(2);
@@ -110,9 +147,16 @@ void ParseSignLook(const YamlField& f, TextSign* sign) {
   f.GetColor("background", &sign->background);
   f.GetColor("foreground", &sign->foreground);
   if (f.Has("font")) sign->font = ParseFont(f.Child("font"));
+  f.Get("italic", &sign->italic);
+  sign->text_height_m = f.Positive("text_height_m", sign->text_height_m);
+  if (sign->text_height_m > sign->height_m) f.Fail("text_height_m must be <= the sign height (size_m[1])");
+  sign->stroke_to_cap_height = f.Positive("stroke_to_cap_height", sign->stroke_to_cap_height);
+  if (sign->stroke_to_cap_height > 0.5) f.Child("stroke_to_cap_height").Fail("must be in (0, 0.5]");
+  if (f.Has("image")) sign->image_path = ParseImagePath(f.Child("image"), source_name);
 }
 
-const std::set<std::string> kSignLookKeys = {"center_height_m", "size_m", "background", "foreground", "font"};
+const std::set<std::string> kSignLookKeys = {"center_height_m", "size_m", "background", "foreground", "font",
+                                             "italic", "text_height_m", "stroke_to_cap_height", "image"};
 
 void AddSign(const YamlField& f, TextSign sign, World* world) {
   if (sign.text.empty()) f.Fail("text must not be empty");
@@ -147,7 +191,7 @@ void ParseSign(const YamlField& f, TextKind kind, World* world, const Indexes& i
     sign.wall_index = LookUp(idx.walls, f.Child("wall"), "wall");
     sign.offset_m = f.Child("offset_m").AsDouble();
   }
-  ParseSignLook(f, &sign);
+  ParseSignLook(f, world->source_file, &sign);
   AddSign(f, sign, world);
 }
 
@@ -170,7 +214,7 @@ void ParseDoorRow(const YamlField& f, World* world, Indexes* idx) {
     std::set<std::string> pkeys = kSignLookKeys;
     pkeys.insert("along_door_m");
     p.RequireOnlyKeys(pkeys);
-    ParseSignLook(p, &plate_look);
+    ParseSignLook(p, world->source_file, &plate_look);
     p.Get("along_door_m", &along);
   }
   const std::vector<YamlField> texts = f.Child("texts").Items();
@@ -217,7 +261,8 @@ World ParseWorldYaml(const std::string& yaml_text, const std::string& source_nam
   try {
     const YamlField root = YamlField::Parse(yaml_text, source_name);
     root.RequireOnlyKeys({"format_version", "name", "description", "wall_height_m", "floor_color", "ceiling_color",
-                          "robot", "walls", "doors", "door_rows", "plates", "distractors", "sensors"});
+                          "robot", "walls", "doors", "door_rows", "plates", "distractors", "sensors",
+                          "lighting"});
     World world;
     world.source_file = source_name;
     world.format_version = root.Child("format_version").AsInt();
@@ -240,6 +285,7 @@ World ParseWorldYaml(const std::string& yaml_text, const std::string& source_nam
     if (root.Has("distractors")) {
       for (const YamlField& f : root.Child("distractors").Items()) ParseSign(f, TextKind::kDistractor, &world, idx);
     }
+    if (root.Has("lighting")) for (const YamlField& f : root.Child("lighting").Items()) ParseLightZone(f, &world);
     ParseRobot(root.Child("robot"), &world);
     if (root.Has("sensors")) ParseSensorOptions(root.Child("sensors"), &world.sensors);
     BuildSurfaces(world);

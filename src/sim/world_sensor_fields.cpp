@@ -38,7 +38,8 @@ void ParseOdometry(const YamlField& f, OdometryNoiseOptions* o) {
 }
 
 void ParseCamera(const YamlField& f, CameraOptions* o) {
-  f.RequireOnlyKeys({"width_px", "height_px", "horizontal_fov_deg", "side", "mount_x_m", "mount_y_m",
+  f.RequireOnlyKeys({"width_px", "height_px", "horizontal_fov_deg", "fx_px", "fy_px", "cx_px", "cy_px", "side",
+                     "mount_x_m", "mount_y_m",
                      "mount_height_m", "pitch_deg", "rate_hz", "lens_blur_sigma_px", "exposure_s",
                      "pixel_noise_stddev", "lighting_gain_stddev", "lighting_gradient"});
   f.Get("width_px", &o->width_px);
@@ -48,6 +49,13 @@ void ParseCamera(const YamlField& f, CameraOptions* o) {
   }
   o->horizontal_fov_deg = f.Positive("horizontal_fov_deg", o->horizontal_fov_deg);
   if (o->horizontal_fov_deg >= 170) f.Child("horizontal_fov_deg").Fail("must be < 170");
+  o->fx_px = f.Positive("fx_px", o->fx_px);
+  o->fy_px = f.Positive("fy_px", o->fy_px);
+  o->cx_px = f.NonNegative("cx_px", o->cx_px);
+  o->cy_px = f.NonNegative("cy_px", o->cy_px);
+  if (o->cx_px > o->width_px - 1) f.Fail("cx_px must be in [0, width_px - 1]");
+  if (o->cy_px > o->height_px - 1) f.Fail("cy_px must be in [0, height_px - 1]");
+  if (f.Has("fx_px") && f.Has("horizontal_fov_deg")) f.Fail("give horizontal_fov_deg or fx_px, not both");
   f.Get("side", &o->side);
   if (o->side != "left" && o->side != "right") f.Child("side").Fail("must be 'left' or 'right'");
   f.Get("mount_x_m", &o->mount_x_m);

@@ -21,6 +21,11 @@ const TextSlamOptions& Validated(const TextSlamOptions& o) {
   if (!(o.association_radius_m > 0)) fail("association_radius_m: must be > 0");
   if (!(o.text_likelihood_gain >= 0)) fail("text_likelihood_gain: must be >= 0");
   if (!(o.max_odometry_gap_m > 0)) fail("max_odometry_gap_m: must be > 0");
+  try {
+    RoomIdGrammar check(o.room_pattern);
+  } catch (const std::invalid_argument& e) {
+    fail(std::string("room_pattern: ") + e.what());
+  }
   return o;
 }
 
@@ -58,7 +63,10 @@ RbpfSlamOptions DefaultTextSlamLaserOptions() {
 
 
 TextSlam::TextSlam(const TextSlamOptions& options)
-    : options_(Validated(options)), slam_(options.slam), back_end_(BackEndOptions(options)) {}
+    : options_(Validated(options)),
+      room_grammar_(options.room_pattern),
+      slam_(options.slam),
+      back_end_(BackEndOptions(options)) {}
 
 bool TextSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index) {
   ValidatePose(odometry_pose, "TextSlam::AddScan");
@@ -112,6 +120,11 @@ TextSlamPlateResult TextSlam::AddPlate(const PlateSighting& sighting, const Pose
   ValidateSighting(sighting);
   ValidatePose(odometry_pose, "TextSlam::AddPlate");
   TextSlamPlateResult result;
+  if (!room_grammar_.Accepts(sighting.text)) {
+    result.outcome = PlateOutcome::kNotARoomId;
+    result.reason = "'" + sighting.text + "' does not fit room_pattern '" + options_.room_pattern + "'";
+    return result;
+  }
   if (!slam_.started()) {
     result.outcome = PlateOutcome::kNoScanYet;
     result.reason = "no scan processed yet";
@@ -155,7 +168,7 @@ TextSlamPlateResult TextSlam::AddPlate(const PlateSighting& sighting, const Pose
     if (!list) return found;
     for (int i = 0; i < static_cast<int>(list->size()); ++i) {
       const SlamLandmark& l = (*list)[i];
-      if (l.text != sighting.text || std::cos(l.yaw_rad - yaw) < 0.5) continue;
+      if (!SameRoom(l.text, sighting.text) || std::cos(l.yaw_rad - yaw) < 0.5) continue;
       const double d = Norm(l.position - z);
       if (d < best) best = d, found = i;
     }

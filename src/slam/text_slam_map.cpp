@@ -35,6 +35,7 @@ std::vector<int> ClusterWalls(const std::vector<SlamLandmark>& plates) {
 
 TextMap TextSlam::BuildTextMap() const {
   TextMap map;
+  map.room_pattern = options_.room_pattern;  // every landmark's text fits it (AddPlate ignores the others)
   const std::vector<SlamLandmark> plates = BestLandmarks();
   const std::vector<int> wall = ClusterWalls(plates);
   for (std::size_t i = 0; i < plates.size(); ++i) {

@@ -91,6 +91,7 @@ MserBandDetector::MserBandDetector(const MserBandDetectorOptions& options) : opt
   Require(c.min_contrast_grey >= 0.0, "character.min_contrast_grey", "must be >= 0");
   ValidateLineGroupingOptions(options.grouping);
   Require(options.box_padding_to_height >= 0.0, "box_padding_to_height", "must be >= 0");
+  Require(options.reference_width_px >= 0, "reference_width_px", "must be >= 0 (0: no scaling)");
   Require(options.nms_max_iou >= 0.0 && options.nms_max_iou <= 1.0, "nms_max_iou", "must be in [0, 1]");
 }
 
@@ -102,8 +103,17 @@ std::vector<TextRegion> MserBandDetector::Detect(const cv::Mat& grey) const {
   }
   const cv::Range rows = ResolveBandRows(options_.band, grey.rows);
   const cv::Mat band = grey.rowRange(rows);
+  // Pixel sizes scaled to this image's width (see reference_width_px).
+  const double scale =
+      options_.reference_width_px > 0 ? std::max(1.0, static_cast<double>(grey.cols) / options_.reference_width_px) : 1.0;
   const MserOptions& m = options_.mser;
-  cv::Ptr<cv::MSER> mser = cv::MSER::create(m.delta, m.min_area_px, m.max_area_px, m.max_variation);
+  const int min_area = std::max(1, static_cast<int>(std::lround(m.min_area_px * scale * scale)));
+  const int max_area = std::max(min_area + 1, static_cast<int>(std::lround(m.max_area_px * scale * scale)));
+  cv::Ptr<cv::MSER> mser = cv::MSER::create(m.delta, min_area, max_area, m.max_variation);
+  CharacterFilterOptions character = options_.character;
+  character.min_char_height_px = std::max(1, static_cast<int>(std::lround(character.min_char_height_px * scale)));
+  character.max_char_height_px = std::max(character.min_char_height_px,
+                                          static_cast<int>(std::lround(character.max_char_height_px * scale)));
   std::vector<std::vector<cv::Point>> regions;
   std::vector<cv::Rect> boxes;
   mser->detectRegions(band, regions, boxes);
@@ -113,7 +123,7 @@ std::vector<TextRegion> MserBandDetector::Detect(const cv::Mat& grey) const {
   std::vector<CharacterCandidate> candidates;
   for (size_t i = 0; i < regions.size(); ++i) {
     CharacterCandidate c;
-    if (ToCandidate(band, integral, regions[i], boxes[i], options_.character, &c)) candidates.push_back(c);
+    if (ToCandidate(band, integral, regions[i], boxes[i], character, &c)) candidates.push_back(c);
   }
 
   std::vector<ScoredBox> lines;

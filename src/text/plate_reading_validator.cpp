@@ -21,11 +21,12 @@ int EditDistance(const std::string& a, const std::string& b) {
 }
 
 std::string PlateReadingValidator::Normalize(const std::string& raw_reading) {
+  // Whitespace goes (OCR inserts spaces between widely spaced glyphs); '-' '.' '/' '·' stay as printed.
   std::string out;
   for (const char ch : raw_reading) {
     const auto c = static_cast<unsigned char>(ch);
     if (std::isspace(c)) continue;
-    out.push_back(static_cast<char>(std::toupper(c)));
+    out.push_back(c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : ch);
   }
   return out;
 }
@@ -33,43 +34,42 @@ std::string PlateReadingValidator::Normalize(const std::string& raw_reading) {
 PlateReadingValidator::PlateReadingValidator(const PlateReadingValidatorOptions& options)
     : options_(options) {
   try {
-    pattern_ = std::regex(options.pattern, std::regex::ECMAScript);
-  } catch (const std::regex_error& e) {
-    throw std::invalid_argument("PlateReadingValidatorOptions.pattern \"" + options.pattern +
-                                "\" is not a valid regex: " + e.what());
+    grammar_.emplace(options.pattern);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("PlateReadingValidatorOptions.pattern: " + std::string(e.what()));
   }
   if (options.max_edit_distance < 0) {
     throw std::invalid_argument("PlateReadingValidatorOptions.max_edit_distance must be >= 0");
   }
   for (const std::string& room : options.known_rooms) {
-    const std::string normalized = Normalize(room);
-    if (normalized.empty() || !std::regex_match(normalized, pattern_)) {
+    if (!grammar_->Accepts(room)) {
       throw std::invalid_argument("PlateReadingValidatorOptions.known_rooms entry \"" + room +
                                   "\" does not match pattern \"" + options.pattern + "\"");
     }
-    if (std::find(known_rooms_.begin(), known_rooms_.end(), normalized) == known_rooms_.end()) {
-      known_rooms_.push_back(normalized);
-    }
+    const KnownRoom known{Normalize(room), CanonicalRoomId(room)};
+    const bool seen = std::any_of(known_rooms_.begin(), known_rooms_.end(),
+                                  [&](const KnownRoom& k) { return k.canonical == known.canonical; });
+    if (!seen) known_rooms_.push_back(known);
   }
 }
 
 std::optional<std::string> PlateReadingValidator::Validate(const std::string& raw_reading) const {
-  const std::string reading = Normalize(raw_reading);
-  if (reading.empty()) return std::nullopt;
+  const std::string canonical = CanonicalRoomId(raw_reading);
+  if (canonical.empty()) return std::nullopt;
   if (known_rooms_.empty()) {
-    if (std::regex_match(reading, pattern_)) return reading;
+    if (grammar_->Accepts(canonical)) return Normalize(raw_reading);
     return std::nullopt;
   }
-  const std::string* match = nullptr;
+  const KnownRoom* match = nullptr;
   int matches = 0;
-  for (const std::string& room : known_rooms_) {
-    if (room == reading) return room;
-    if (EditDistance(room, reading) <= options_.max_edit_distance) {
+  for (const KnownRoom& room : known_rooms_) {
+    if (room.canonical == canonical) return room.printed;
+    if (EditDistance(room.canonical, canonical) <= options_.max_edit_distance) {
       match = &room;
       ++matches;
     }
   }
-  if (matches == 1) return *match;
+  if (matches == 1) return match->printed;
   return std::nullopt;
 }
 

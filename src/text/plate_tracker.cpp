@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <tuple>
+
+#include "doorplate_localization/common/room_id.h"
 
 namespace doorplate_localization {
 namespace {
@@ -26,6 +29,9 @@ PlateTracker::PlateTracker(const PlateTrackerOptions& options) : options_(option
   Require(options.max_height_ratio >= 1.0, "max_height_ratio", "must be >= 1");
   Require(options.max_missed_frames >= 0, "max_missed_frames", "must be >= 0");
   Require(options.min_voted_frames >= 1, "min_voted_frames", "must be >= 1");
+  Require(options.read_every_n_frames >= 1, "read_every_n_frames", "must be >= 1");
+  Require(options.max_readings_per_track >= 0, "max_readings_per_track", "must be >= 0 (0: no limit)");
+  Require(options.enough_votes >= 0, "enough_votes", "must be >= 0 (0: never enough)");
 }
 
 void PlateTracker::Reset() {
@@ -81,9 +87,14 @@ void PlateTracker::UpdateTrack(Track& track, const PlateObservation& observation
   track.last_stamp_s = stamp_s;
   track.missed_frames = 0;
   ++track.observed_frames;
+  if (observation.read_attempted) {
+    ++track.read_attempts;
+    track.last_read_frame = track.observed_frames;
+  }
   if (!observation.text.empty()) {
     ++track.voted_frames;
-    track.votes[observation.text] += std::max(observation.confidence, 1e-3);
+    // Votes per room (canonical key: "E14-295" and "E14295" vote together); frames per printed form.
+    track.votes[CanonicalRoomId(observation.text)] += std::max(observation.confidence, 1e-3);
     ++track.vote_frames[observation.text];
   }
 }
@@ -94,11 +105,17 @@ bool PlateTracker::MakeReport(const Track& track, PlateReport* report) const {
   auto winner = track.votes.begin();
   for (auto it = track.votes.begin(); it != track.votes.end(); ++it) {
     total += it->second;
-    if (it->second > winner->second) winner = it;  // ties: the lexicographically first text
+    if (it->second > winner->second) winner = it;  // ties: the lexicographically first room key
   }
-  report->text = winner->first;
+  // The winning room's most frequent printed form (ties: the lexicographically first), and its frames.
+  int winner_frames = 0, printed_frames = 0;
+  for (const auto& [printed, frames] : track.vote_frames) {
+    if (CanonicalRoomId(printed) != winner->first) continue;
+    winner_frames += frames;
+    if (frames > printed_frames) printed_frames = frames, report->text = printed;
+  }
   report->vote_share = winner->second / total;
-  report->mean_confidence = winner->second / track.vote_frames.at(winner->first);
+  report->mean_confidence = winner->second / std::max(winner_frames, 1);
   report->confidence = report->vote_share * report->mean_confidence;
   report->voted_frame_count = track.voted_frames;
   report->observed_frame_count = track.observed_frames;
@@ -107,6 +124,32 @@ bool PlateTracker::MakeReport(const Track& track, PlateReport* report) const {
   report->stamp_s = track.last_stamp_s;
   report->track_id = track.id;
   return true;
+}
+
+bool PlateTracker::WantsReading(const Track& track) const {
+  if (track.reported) return false;
+  if (options_.max_readings_per_track > 0 && track.read_attempts >= options_.max_readings_per_track) return false;
+  if (options_.enough_votes > 0) {
+    std::map<std::string, int> frames_per_room;
+    for (const auto& [printed, frames] : track.vote_frames) {
+      if ((frames_per_room[CanonicalRoomId(printed)] += frames) >= options_.enough_votes) return false;
+    }
+  }
+  // observed_frames counts this frame only after Update: the box being planned is frame observed_frames + 1.
+  return track.observed_frames + 1 - track.last_read_frame >= options_.read_every_n_frames;
+}
+
+std::vector<bool> PlateTracker::PlanReadings(const std::vector<cv::Rect>& boxes_px, double stamp_s) const {
+  std::vector<bool> read(boxes_px.size(), true);
+  if (has_stamp_ && stamp_s < last_stamp_s_) return read;  // Update will reset: every box is new
+  std::vector<PlateObservation> observations(boxes_px.size());
+  for (size_t i = 0; i < boxes_px.size(); ++i) observations[i].box_px = boxes_px[i];
+  std::vector<int> track_of_observation;
+  Associate(observations, stamp_s, &track_of_observation);
+  for (size_t i = 0; i < boxes_px.size(); ++i) {
+    if (track_of_observation[i] >= 0) read[i] = WantsReading(tracks_[track_of_observation[i]]);
+  }
+  return read;
 }
 
 std::vector<PlateReport> PlateTracker::Update(const std::vector<PlateObservation>& observations,

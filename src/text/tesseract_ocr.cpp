@@ -34,6 +34,9 @@ std::string ResolveTessdataDir(const TesseractOcrOptions& options) {
 TesseractOcr::TesseractOcr(const TesseractOcrOptions& options)
     : options_(options), api_(std::make_unique<tesseract::TessBaseAPI>()) {
   ValidateOcrPreprocessOptions(options.preprocess);
+  if (!(options.min_confidence >= 0.0 && options.min_confidence <= 1.0)) {
+    throw std::invalid_argument("TesseractOcrOptions.min_confidence must be in [0, 1]");
+  }
   const std::string dir = ResolveTessdataDir(options);
   const std::string model = dir + "/" + options.language + ".traineddata";
   if (!std::ifstream(model).good()) {

@@ -37,6 +37,13 @@ inline double ParseNumber(const std::string& option, const std::string& text) {
   throw UsageError(option + ": '" + text + "' is not a number");
 }
 
+// `text` (the value of `option`) as a finite number > 0; throws UsageError "OPTION: 'TEXT' is not a number > 0".
+inline double ParsePositiveNumber(const std::string& option, const std::string& text) {
+  const auto value = ParseFiniteNumber(text);
+  if (!value || *value <= 0.0) throw UsageError(option + ": '" + text + "' is not a number > 0");
+  return *value;
+}
+
 // `text` as a whole number in [min_value, max_value]; throws UsageError
 // "OPTION: 'TEXT' is not a whole number >= MIN" otherwise (or "is not a number").
 inline double ParseWholeNumber(const std::string& option, const std::string& text, int min_value,

@@ -12,7 +12,7 @@
 
 #include "doorplate_localization/behaviour/corridor_sweep.h"
 #include "doorplate_localization/mcl/localization_grid.h"
-#include "doorplate_localization/mcl/text_amcl_setup.h"
+#include "doorplate_localization/mcl/text_amcl_session.h"
 #include "doorplate_localization/sim/ground_truth_maps.h"
 #include "doorplate_localization/sim/simulator.h"
 #include "doorplate_localization/text/text_extractor.h"
@@ -53,13 +53,12 @@ class Soak {
       const World& w = sim_.world();
       grid_ = RasterizeWorld(w, 0.05, w.sensors.laser.mount_height_m);
       text_map_ = std::make_shared<const TextMap>(GroundTruthTextMap(w));
-      setup_.filter.random_seed = options.seed;
-      setup_.filter.max_particles = options.max_particles;
-      filter_ = MakeTextAmcl(setup_, grid_, text_map_);
+      session_options_.setup.filter.random_seed = options.seed;
+      session_options_.setup.filter.max_particles = options.max_particles;
+      session_options_.initial_pose = sim_.true_pose();
+      session_options_.initial_covariance = Eigen::Vector3d(0.1 * 0.1, 0.1 * 0.1, 0.05 * 0.05).asDiagonal();
+      session_ = std::make_unique<TextAmclSession>(session_options_, grid_, text_map_);
       if (faults_.enabled()) free_space_ = std::make_unique<LocalizationGrid>(grid_);
-      Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-      covariance.diagonal() << 0.1 * 0.1, 0.1 * 0.1, 0.05 * 0.05;
-      filter_->Initialize(sim_.true_pose(), covariance);
     }
   }
 
@@ -149,35 +148,29 @@ class Soak {
       cmd = sweep_->Step(scan_.ranges_m, scan_.angle_min_rad, scan_.angle_increment_rad, sim_.odom_pose());
     }
     sim_.SetCommand(cmd.linear_mps, cmd.angular_rps);
-    if (!filter_) return;
+    if (!session_) return;
     const bool laser_off = faults_.laser_off(sim_.time_s());  // the localizer gets no scan
-    if (!laser_off && (filter_->UpdateOdometry(sim_.odom_pose()) || !has_odom_reference_)) {
-      odom_at_update_ = sim_.odom_pose();
-      has_odom_reference_ = true;
-    }
-    if (!laser_off && filter_->UpdateLaser(scan_)) ++window_.filter_updates;
-    if (!laser_off) localizer_scan_ = scan_;
-    // The estimate carried to now by odometry, against the truth.
-    const Pose2D estimate = filter_->Estimate().pose.Compose(odom_at_update_.Between(sim_.odom_pose()));
+    if (!laser_off && session_->AddScan(sim_.time_s(), sim_.odom_pose(), scan_).laser_used) ++window_.filter_updates;
+    // The estimate carried to now by odometry (map -> odom ∘ odometry), against the truth.
+    const Pose2D estimate = session_->PoseAtOdometry(sim_.odom_pose());
     const double error = std::hypot(estimate.x_m - sim_.true_pose().x_m, estimate.y_m - sim_.true_pose().y_m);
     if (!std::isfinite(error)) throw std::runtime_error("localizer estimate is not finite");
     window_.mean_error_m += error;
     window_.max_error_m = std::max(window_.max_error_m, error);
     ++error_samples_;
-    const bool converged = filter_->State() == LocalizationState::kConverged;
+    const bool converged = session_->Status().state == LocalizationState::kConverged;
     if (converged) ++window_.converged_scans;
     faults_.Observe(sim_.time_s(), sim_.distance_travelled_m(), error,
                     NormalizeAngle(estimate.theta_rad - sim_.true_pose().theta_rad), converged, !laser_off);
   }
 
-  // A restarted nodelet: a new filter, global localization, no odometry reference.
+  // A restarted nodelet: a new session, global localization, no odometry reference.
   void RestartLocalizer() {
     ++restarts_;
-    TextAmclSetupOptions setup = setup_;
-    setup.filter.random_seed = options_.seed + static_cast<std::uint64_t>(restarts_);
-    filter_ = MakeTextAmcl(setup, grid_, text_map_);
-    filter_->GlobalLocalization();
-    has_odom_reference_ = false;
+    TextAmclSessionOptions o = session_options_;
+    o.setup.filter.random_seed = options_.seed + static_cast<std::uint64_t>(restarts_);
+    o.start_with_global_localization = true;
+    session_ = std::make_unique<TextAmclSession>(o, grid_, text_map_);
   }
 
   // Teleports the robot to a random free pose at least kidnap_min_jump_m away and within
@@ -224,26 +217,21 @@ class Soak {
     ++window_.frames;
     const std::vector<PlateReport> reports = extractor_->Process(sim_.CameraImage(), sim_.time_s());
     window_.plate_reports += static_cast<long long>(reports.size());
-    if (!filter_ || localizer_scan_.ranges_m.empty()) return;
-    // The range along the plate's bearing comes from the last scan the localizer got (as the Text AMCL
-    // nodelet's latest scan: during a laser outage, the one from before it). The reading is applied to
-    // the particles as they are, moved at the last laser update (as the nodelet does).
-    for (const PlateReport& report : reports) {
-      const PlateReading reading = ToPlateReading(
-          report, camera_yaw_rad_,
-          RangeAlongBearing(localizer_scan_, camera_yaw_rad_ + report.bearing_rad,
-                            1.5 * std::fabs(localizer_scan_.angle_increment_rad)));
-      if (!ValidatePlateReading(reading).empty()) continue;
-      filter_->UpdatePlate(reading);
-    }
+    if (!session_ || reports.empty()) return;
+    // The session weighs them at this moment's odometry, with the range from the scan it got nearest in
+    // time (none during a laser outage longer than its scan age limit).
+    std::vector<PlateReading> readings;
+    for (const PlateReport& report : reports) readings.push_back(ToPlateReading(report, camera_yaw_rad_));
+    session_->AddOdometry(sim_.time_s(), sim_.odom_pose());
+    session_->AddPlates(sim_.time_s(), readings);
   }
 
   const SoakOptions options_;
   Simulator sim_;
   std::unique_ptr<CorridorSweep> sweep_;
   std::unique_ptr<TextExtractor> extractor_;
-  std::unique_ptr<TextAmcl> filter_;
-  TextAmclSetupOptions setup_;
+  std::unique_ptr<TextAmclSession> session_;
+  TextAmclSessionOptions session_options_;
   OccupancyGrid grid_;
   std::shared_ptr<const TextMap> text_map_;
   FaultSchedule faults_;
@@ -252,10 +240,7 @@ class Soak {
   int restarts_ = 0;
   std::vector<Vec2> route_;  // true positions driven, every 0.25 m (where a kidnap may put the robot)
   double camera_yaw_rad_ = 0.0;
-  LocalizationScan scan_;            // the latest simulated scan (the sweep drives on it)
-  LocalizationScan localizer_scan_;  // the latest scan the localizer got
-  Pose2D odom_at_update_;
-  bool has_odom_reference_ = false;
+  LocalizationScan scan_;  // the latest simulated scan (the sweep drives on it)
   SoakWindow window_;
   long long error_samples_ = 0;
   std::vector<std::string> first_errors_;

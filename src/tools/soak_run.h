@@ -22,7 +22,7 @@ struct SoakOptions {
   double window_s = 300.0;      // simulated seconds per reported window
   double camera_rate_hz = 0.0;  // frames through the text extractor per simulated second; 0: the world's rate
   double speed_mps = 0.4;       // cruise speed of the sweep
-  bool localizer = true;        // run Text AMCL (MakeTextAmcl) on the ground-truth maps of the world
+  bool localizer = true;        // run Text AMCL (a TextAmclSession) on the ground-truth maps of the world
   int max_particles = 2000;     // of the localizer
   std::uint64_t seed = 1;       // simulator noise, filter and kidnap poses
   // Faults to inject (fault_run.h; needs the localizer). With a schedule the run ends when the last

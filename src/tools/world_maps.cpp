@@ -32,12 +32,6 @@ struct Args {
 namespace tools = doorplate_localization::tools;
 using tools::UsageError;
 
-double ParsePositive(const std::string& option, const std::string& text) {
-  const auto value = tools::ParseFiniteNumber(text);
-  if (!value || *value <= 0.0) throw UsageError(option + ": '" + text + "' is not a number > 0");
-  return *value;
-}
-
 Args ParseArgs(int argc, char** argv) {
   Args args;
   for (int i = 1; i < argc; ++i) {
@@ -46,8 +40,8 @@ Args ParseArgs(int argc, char** argv) {
     const std::string value = tools::TakeValue(argc, argv, &i);
     if (option == "--world") args.world = value;
     else if (option == "--out") args.out = value;
-    else if (option == "--resolution") args.resolution_m = ParsePositive(option, value);
-    else if (option == "--laser-height") args.laser_height_m = ParsePositive(option, value);
+    else if (option == "--resolution") args.resolution_m = tools::ParsePositiveNumber(option, value);
+    else if (option == "--laser-height") args.laser_height_m = tools::ParsePositiveNumber(option, value);
     else throw UsageError("unknown option '" + option + "'");
   }
   if (args.world.empty()) throw UsageError("--world is required");

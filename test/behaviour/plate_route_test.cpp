@@ -100,5 +100,20 @@ TEST(PlanFromReading, RefusesRoomsNotLinkedToTheReadPlateAndUnknownRooms) {
   EXPECT_NE(unknown.refusal.find("room 555 is not in the text map route.yaml"), std::string::npos);
 }
 
+TEST(PlanFromReading, ARequestWithoutTheSeparatorsFindsThePrintedRoom) {
+  TextMap map;
+  map.landmarks = {Plate("E14-293", 1.0, 0.0, M_PI / 2, "south"), Plate("E14-295", 4.0, 0.0, M_PI / 2, "south"),
+                   Plate("E14-295A", 9.0, 0.0, M_PI / 2, "south")};
+  ComputeAdjacentDistances(&map);
+  const RoomGoalPlanner planner(RoomGoalPlannerOptions{}, map, "e14");
+  PlateReading reading;
+  reading.landmark = 0;
+  reading.plate_on_left = false;  // a south plate on the right: driving east, towards +x
+  const RoomGoalResult result = PlanFromReading(planner, "E14295", reading);
+  ASSERT_TRUE(result.goal) << result.refusal;
+  EXPECT_EQ(result.goal->landmark, 1);  // not the look-alike E14-295A
+  EXPECT_NEAR(result.goal->pose.x_m, 3.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace doorplate_localization

@@ -91,6 +91,42 @@ TEST(RoomGoalPlanner, AWallSuffixSelectsOnePlateOfARepeatedRoom) {
   EXPECT_TRUE(Contains(east.refusal, "room 220 has no plate on wall 'east'")) << east.refusal;
 }
 
+// A building with real identifier formats: "E14-295" and "32-069T" on the north wall, "32-076" and "312A"
+// on the south wall, "B/1404" once on each.
+TextMap RealFormatsMap() {
+  TextMap map;
+  map.landmarks = {Plate("E14-295", 3.0, 2.0, -M_PI / 2, "north"), Plate("32-069T", 6.0, 2.0, -M_PI / 2, "north"),
+                   Plate("32-076", 6.0, 0.0, M_PI / 2, "south"), Plate("312A", 9.0, 0.0, M_PI / 2, "south"),
+                   Plate("B/1404", 12.0, 0.0, M_PI / 2, "south"), Plate("B/1404", 14.0, 2.0, -M_PI / 2, "north")};
+  return map;
+}
+
+TEST(RoomGoalPlanner, ARoomNumberWithOrWithoutSeparatorsReachesTheSamePlate) {
+  const RoomGoalPlanner planner(RoomGoalPlannerOptions{}, RealFormatsMap(), "real.text_map.yaml");
+  for (const char* request : {"E14-295", "E14295", "e14 295", " E14:295\n"}) {
+    const RoomGoalResult result = planner.Plan(request, std::nullopt);
+    ASSERT_TRUE(result.goal) << request << ": " << result.refusal;
+    EXPECT_EQ(result.goal->landmark, 0) << request;
+  }
+  const RoomGoalResult stacked = planner.Plan("32069T", std::nullopt);
+  ASSERT_TRUE(stacked.goal) << stacked.refusal;
+  EXPECT_EQ(stacked.goal->landmark, 1);
+  const RoomGoalResult wall = planner.Plan("B1404@north", std::nullopt);  // a wall suffix still selects one
+  ASSERT_TRUE(wall.goal) << wall.refusal;
+  EXPECT_EQ(wall.goal->landmark, 5);
+}
+
+TEST(RoomGoalPlanner, LookAlikeRoomsStayApart) {
+  const RoomGoalPlanner planner(RoomGoalPlannerOptions{}, RealFormatsMap(), "real.text_map.yaml");
+  const RoomGoalResult other = planner.Plan("32-076", std::nullopt);
+  ASSERT_TRUE(other.goal) << other.refusal;
+  EXPECT_EQ(other.goal->landmark, 2);  // not 32-069T
+  const RoomGoalResult look_alike = planner.Plan("312B", std::nullopt);
+  EXPECT_FALSE(look_alike.goal);
+  EXPECT_EQ(look_alike.refusal, "room 312B is not in the text map real.text_map.yaml; known rooms: 312A, 32-069T, "
+                                "32-076, B/1404, E14-295");
+}
+
 TEST(RoomGoalPlanner, InvalidOptionsNameTheField) {
   RoomGoalPlannerOptions options;
   options.duplicate_rule = "first";

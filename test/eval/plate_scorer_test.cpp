@@ -76,11 +76,12 @@ TEST_F(PlateScorerTest, APlateIsPassedWhenItCrossesTheCentreColumnOnALeg) {
   EXPECT_EQ(scorer_.pass().plates_passed, 1);
 }
 
-TEST_F(PlateScorerTest, MatchesABoxToThePlateInsideItOrTheNearestWithinHalfABoxWidth) {
+TEST_F(PlateScorerTest, MatchesABoxToThePlateInsideItOrTheNearestWithinHalfABoxWidthPlusItsHeight) {
   const Pose2D pose{3.2, 0.6, 0.0};
   EXPECT_EQ(scorer_.MatchBox(ReportOn(0, pose, "201").box_px, pose), 0);
-  EXPECT_EQ(scorer_.MatchBox(ReportOn(0, pose, "201", 0, 25).box_px, pose), 0);  // outside, 25 px <= 30 from centre
-  EXPECT_EQ(scorer_.MatchBox(ReportOn(0, pose, "201", 45).box_px, pose), -1);    // outside, 45 px > 30 from centre
+  EXPECT_EQ(scorer_.MatchBox(ReportOn(0, pose, "201", 0, 25).box_px, pose), 0);  // outside, 25 px <= 54 from centre
+  EXPECT_EQ(scorer_.MatchBox(ReportOn(0, pose, "201", 45).box_px, pose), 0);     // a fragment: 45 px <= 30 + 24
+  EXPECT_EQ(scorer_.MatchBox(ReportOn(0, pose, "201", 60).box_px, pose), -1);    // outside, 60 px > 54 from centre
   EXPECT_EQ(scorer_.MatchBox(cv::Rect(500, 20, 60, 24), pose), -1);              // nothing there
 }
 

@@ -44,6 +44,7 @@ TEST(SaveTextMap, SaveThenLoadGivesTheSameMap) {
   test::TempDir dir;
   TextMap map;
   map.occupancy_map = "ward.yaml";
+  map.room_pattern = "[0-9]{4}|A\"QUOTED\"\\d";  // quotes and a backslash to escape; fits both texts
   map.landmarks = {Plate("0210", 2.1, 2.2, "north"), Plate("A \"quoted\": 7", 0.1 + 0.2, -1e-7, "")};
   map.landmarks[1].height_m = 1.55;
   map.landmarks[1].observations = 12;
@@ -66,6 +67,7 @@ TEST(SaveTextMap, SaveThenLoadGivesTheSameMap) {
     EXPECT_EQ(b.position_stddev_m, a.position_stddev_m);
   }
   EXPECT_EQ(back.occupancy_map, "ward.yaml");
+  EXPECT_EQ(back.room_pattern, map.room_pattern);
   ASSERT_EQ(back.adjacent.size(), 1u);
   EXPECT_EQ(back.adjacent[0].to, 1);
   EXPECT_EQ(back.adjacent[0].distance_m, 3.3);
@@ -105,6 +107,60 @@ TEST(TextMap, RepeatedRoomNumbersAreAllowedAndFindReturnsEveryOne) {
   EXPECT_EQ(back.Texts(), (std::vector<std::string>{"219", "220"}));
 }
 
+TEST(TextMap, FindAndTextsCompareRoomsInCanonicalForm) {
+  TextMap map;
+  map.landmarks = {Plate("E14-295", 0, 0, "n"), Plate("e14 295", 4, 0, "s"), Plate("32-069T", 8, 0, "n"),
+                   Plate("32-076", 12, 0, "n"), Plate("312A", 16, 0, "n")};
+  EXPECT_EQ(map.Find("E14295"), (std::vector<int>{0, 1}));
+  EXPECT_EQ(map.Find("e14-295"), (std::vector<int>{0, 1}));
+  EXPECT_EQ(map.Find("32069T"), std::vector<int>{2});
+  EXPECT_EQ(map.Find("32-076"), std::vector<int>{3});  // not 32-069T
+  EXPECT_TRUE(map.Find("312B").empty());               // a look-alike is another room
+  EXPECT_TRUE(map.Find("-").empty());
+  EXPECT_EQ(map.Texts(), (std::vector<std::string>{"312A", "32-069T", "32-076", "E14-295"}));
+}
+
+TEST(SaveTextMap, TheRoomPatternAndPrintedTextsRoundTrip) {
+  test::TempDir dir;
+  TextMap map;
+  map.room_pattern = "[A-Z]{0,2}[0-9]{1,6}[A-Z]{0,2}|WC";
+  map.landmarks = {Plate("76\xC2\xB7" "100SC", 0, 0, "n"), Plate("B/1404", 4, 0, "n"), Plate("39.A", 8, 0, "n"),
+                   Plate("WC", 12, 0, "n")};
+  SaveTextMap(map, dir.Path("t.yaml"));
+  const TextMap back = LoadTextMap(dir.Path("t.yaml"));
+  EXPECT_EQ(back.room_pattern, map.room_pattern);
+  ASSERT_EQ(back.landmarks.size(), 4u);
+  EXPECT_EQ(back.landmarks[0].text, "76\xC2\xB7" "100SC");
+  EXPECT_EQ(back.landmarks[1].text, "B/1404");
+  EXPECT_EQ(back.landmarks[2].text, "39.A");
+  EXPECT_EQ(back.landmarks[3].text, "WC");
+}
+
+TEST(ParseTextMap, WithoutARoomPatternTheDefaultGrammarApplies) {
+  const TextMap map = ParseTextMap(kValid, "m.yaml");
+  EXPECT_EQ(map.room_pattern, kDefaultRoomPattern);
+}
+
+TEST(ParseTextMap, ABuildingPatternDecidesWhichTextsAreRooms) {
+  const std::string with_wc = std::string(kValid).replace(std::string(kValid).find("text: \"214\""), 11, "text: \"WC\"");
+  const std::string error = ErrorOf<TextMapError>([&] { ParseTextMap(with_wc, "w.yaml"); });
+  EXPECT_TRUE(Contains(error, "w.yaml: landmarks[0].text: 'WC'")) << error;
+  const TextMap map = ParseTextMap("room_pattern: \"[0-9]{3}|WC\"\n" + with_wc, "w.yaml");
+  EXPECT_EQ(map.landmarks[1].text, "WC");
+  const std::string short_error =
+      ErrorOf<TextMapError>([&] { ParseTextMap("room_pattern: \"[0-9]{4}\"\n" + std::string(kValid), "w.yaml"); });
+  EXPECT_TRUE(Contains(short_error, "w.yaml: landmarks[0].text: '214'")) << short_error;
+}
+
+TEST(SaveTextMap, RefusesATextThatDoesNotFitTheRoomPattern) {
+  test::TempDir dir;
+  TextMap map;
+  map.landmarks = {Plate("214", 0, 0, "w"), Plate("EXIT", 4, 0, "w")};
+  const std::string error = ErrorOf<TextMapError>([&] { SaveTextMap(map, dir.Path("t.yaml")); });
+  EXPECT_TRUE(Contains(error, dir.Path("t.yaml") + ": landmarks[1].text: 'EXIT'")) << error;
+  EXPECT_TRUE(dir.List().empty());
+}
+
 TEST(ParseTextMap, EachBrokenFieldGivesAnErrorNamingTheFileAndField) {
   const std::string ok = kValid;
   const auto with = [&](const std::string& from, const std::string& to) {
@@ -129,6 +185,9 @@ TEST(ParseTextMap, EachBrokenFieldGivesAnErrorNamingTheFileAndField) {
       {ok + "  - {from: 0, to: 1, distance_m: 4.5, source: odometry}\n", "adjacent[1]: duplicate entry for 0 -> 1"},
       {with("observations: 3", "observations: -3"), "landmarks[1].observations: must be >= 0"},
       {with("frame_id: map", "frame_id: \"\""), "frame_id: must not be empty"},
+      {with("frame_id: map", "frame_id: map\nroom_pattern: \"[0-9\""), "room_pattern: room pattern \"[0-9\" is not a valid"},
+      {with("frame_id: map", "frame_id: map\nroom_pattern: \"\""), "room_pattern: room pattern must not be empty"},
+      {with("text: \"214\"", "text: \"EXIT\""), "landmarks[0].text: 'EXIT' (canonical 'EXIT') does not fit room_pattern"},
   };
   for (const auto& [yaml, expected] : cases) {
     const std::string error = ErrorOf<TextMapError>([&] { ParseTextMap(yaml, "maps/w.text_map.yaml"); });

@@ -62,6 +62,49 @@ TEST(TextMatcher, CompatibleListsEveryPlateThatCouldHaveProducedTheReading) {
   EXPECT_NEAR(matches[3].probability, 0.2 * 0.05, 1e-12);
 }
 
+TEST(TextMatcher, SeparatorsDoNotCountInRealBuildingFormats) {
+  const TextMatcher m({});
+  EXPECT_DOUBLE_EQ(m.Similarity("E14295", "E14-295"), 1.0);
+  EXPECT_DOUBLE_EQ(m.Similarity("B1404", "B/1404"), 1.0);
+  EXPECT_DOUBLE_EQ(m.Similarity("3:21", "3.21"), 1.0);                // OCR read the dot as a colon
+  EXPECT_DOUBLE_EQ(m.Similarity("76100SC", "76\xC2\xB7" "100SC"), 1.0);  // raised dot
+  EXPECT_DOUBLE_EQ(m.MatchProbability("21 52", 0.9, "21/52"), 0.9);
+  EXPECT_DOUBLE_EQ(m.Similarity("E14-795", "E14-295"), 0.05);  // the separator is no edit; 7-for-2 is one
+}
+
+TEST(TextMatcher, LookAlikesStayApart) {
+  const TextMatcher m({});
+  EXPECT_DOUBLE_EQ(m.Similarity("312A", "312B"), 0.05);      // one other substitution, not the same room
+  EXPECT_NEAR(m.MatchProbability("312A", 0.9, "312B"), 0.1 * 0.05, 1e-12);
+  EXPECT_DOUBLE_EQ(m.Similarity("32-076", "32-069T"), 0.0);  // three edits
+  EXPECT_DOUBLE_EQ(m.Similarity("-", "-"), 0.0);             // separators alone name no room
+  EXPECT_DOUBLE_EQ(m.MatchProbability("", 0.9, ""), 0.0);
+}
+
+TEST(TextMatcher, CompatibleFindsAPlateWhateverSeparatorsWereRead) {
+  TextMap map;
+  for (const char* t : {"E14-295", "32-069T", "32-076", "312A", "312B"}) {
+    TextLandmark l;
+    l.text = t;
+    map.landmarks.push_back(l);
+  }
+  const TextMatcher m({});
+  const auto e14 = m.Compatible(map, "e14 295", 0.8);
+  ASSERT_EQ(e14.size(), 1u);
+  EXPECT_EQ(e14[0].landmark_index, 0);
+  EXPECT_DOUBLE_EQ(e14[0].probability, 0.8);
+  const auto t = m.Compatible(map, "32069T", 0.8);
+  ASSERT_EQ(t.size(), 1u);  // 32-076 is three edits away
+  EXPECT_EQ(t[0].landmark_index, 1);
+  EXPECT_DOUBLE_EQ(t[0].probability, 0.8);
+  const auto a = m.Compatible(map, "312A", 0.8);
+  ASSERT_EQ(a.size(), 2u);  // 312A itself, and 312B only as a misreading
+  EXPECT_EQ(a[0].landmark_index, 3);
+  EXPECT_DOUBLE_EQ(a[0].probability, 0.8);
+  EXPECT_EQ(a[1].landmark_index, 4);
+  EXPECT_NEAR(a[1].probability, 0.2 * 0.05, 1e-12);
+}
+
 TEST(TextMatcher, RejectsBadProbabilitiesAndMalformedPairs) {
   TextMatchOptions o;
   o.other_edit_probability = 1.5;

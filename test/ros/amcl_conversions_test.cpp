@@ -14,17 +14,6 @@ namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-// 360 beams over a full turn, every range `range_m`, laser at `mount` in base_link.
-LocalizationScan RingScan(float range_m, const Pose2D& mount = {}) {
-  sensor_msgs::LaserScan msg;
-  msg.angle_min = -M_PI;
-  msg.angle_increment = 2 * M_PI / 360;
-  msg.range_min = 0.15f;
-  msg.range_max = 12.0f;
-  msg.ranges.assign(360, range_m);
-  return ToLocalizationScan(msg, mount);
-}
-
 TEST(ToLocalizationScan, KeepsNonFiniteRangesAndTheMountingPose) {
   sensor_msgs::LaserScan msg;
   msg.angle_min = -1.0f;
@@ -51,27 +40,24 @@ TextDetection Detection(const std::string& text, float bearing_rad, bool crossed
   return d;
 }
 
-TEST(ToPlateReadings, KeepsCrossedCentreReadingsWithTheBearingInBaseLinkAndTheLaserRange) {
+TEST(ToPlateReadings, KeepsCrossedCentreReadingsWithTheBearingInBaseLinkAndNoRange) {
   TextDetectionArray msg;
   msg.detections = {Detection("214", 0.05f, true), Detection("215", 0.0f, false), Detection("", 0.0f, true)};
-  const LocalizationScan scan = RingScan(1.5f);
   std::vector<std::string> problems;
-  const std::vector<PlateReading> readings = ToPlateReadings(msg, CameraAxis{M_PI / 2, 1.0}, &scan, 0.02, &problems);
+  const std::vector<PlateReading> readings = ToPlateReadings(msg, CameraAxis{M_PI / 2, 1.0}, &problems);
   EXPECT_TRUE(problems.empty());
   ASSERT_EQ(readings.size(), 1u);
   EXPECT_EQ(readings[0].text, "214");
   EXPECT_NEAR(readings[0].confidence, 0.9, 1e-6);
   EXPECT_NEAR(readings[0].bearing_rad, M_PI / 2 + 0.05, 1e-6);
-  ASSERT_TRUE(readings[0].range_m.has_value());
-  EXPECT_NEAR(*readings[0].range_m, 1.5, 1e-6);
+  EXPECT_FALSE(readings[0].range_m.has_value());  // the session measures it (TextAmclSession)
   EXPECT_EQ(readings[0].camera_side, CameraSide::kUnknown);
-  EXPECT_FALSE(ToPlateReadings(msg, CameraAxis{M_PI / 2, 1.0}, nullptr, 0.02, nullptr)[0].range_m.has_value());
 }
 
 TEST(ToPlateReadings, TurnsTheBearingOfAnUpsideDownCameraClockwise) {
   TextDetectionArray msg;
   msg.detections = {Detection("214", 0.05f, true)};
-  const std::vector<PlateReading> readings = ToPlateReadings(msg, CameraAxis{-M_PI / 2, -1.0}, nullptr, 0.02, nullptr);
+  const std::vector<PlateReading> readings = ToPlateReadings(msg, CameraAxis{-M_PI / 2, -1.0}, nullptr);
   ASSERT_EQ(readings.size(), 1u);
   EXPECT_NEAR(readings[0].bearing_rad, -M_PI / 2 - 0.05, 1e-6);
 }
@@ -81,7 +67,7 @@ TEST(ToPlateReadings, ReportsAnInvalidReadingAndKeepsTheOthers) {
   msg.detections = {Detection("214", 0.0f, true, 1.5f), Detection("216", std::nanf(""), true),
                     Detection("218", 0.1f, true)};
   std::vector<std::string> problems;
-  const std::vector<PlateReading> readings = ToPlateReadings(msg, CameraAxis{0.0, 1.0}, nullptr, 0.02, &problems);
+  const std::vector<PlateReading> readings = ToPlateReadings(msg, CameraAxis{0.0, 1.0}, &problems);
   ASSERT_EQ(readings.size(), 1u);
   EXPECT_EQ(readings[0].text, "218");
   ASSERT_EQ(problems.size(), 2u);
@@ -164,6 +150,30 @@ TEST(StateText, NamesTheReasonOnlyWhenLost) {
   EXPECT_EQ(StateText(LocalizationState::kConverged, LostReason::kNone), "converged");
   EXPECT_EQ(StateText(LocalizationState::kLost, LostReason::kPlateContradiction), "lost: plate_contradiction");
   EXPECT_EQ(StateText(LocalizationState::kLost, LostReason::kLikelihoodCollapse), "lost: likelihood_collapse");
+}
+
+TEST(DescribePlateOutcome, SaysWhatBecameOfTheReading) {
+  PlateReadingOutcome weighed;
+  weighed.reading.text = "214";
+  weighed.reading.bearing_rad = 1.5708;
+  weighed.reading.range_m = 1.2;
+  weighed.result.used = true;
+  weighed.result.explained_ratio = 3.1;
+  weighed.result.best_cluster_explained_ratio = 4.0;
+  EXPECT_EQ(DescribePlateOutcome(weighed),
+            "plate '214' at 1.571 rad, range 1.20 m: explained 3.10 (best cluster 4.00), 0 reseeded");
+  weighed.result.used = false;
+  weighed.result.ignored_reason = "confidence 0.2 below text_min_confidence 0.5";
+  EXPECT_EQ(DescribePlateOutcome(weighed), "plate '214' not used: confidence 0.2 below text_min_confidence 0.5");
+  PlateReadingOutcome unknown;
+  unknown.reading.text = "999";
+  unknown.disposition = PlateDisposition::kUnknownRoomFirst;
+  EXPECT_EQ(DescribePlateOutcome(unknown), "room '999' is not in the text map");
+  PlateReadingOutcome stale = unknown;
+  stale.disposition = PlateDisposition::kStale;
+  stale.stamp_s = 12.3;
+  stale.detail = "older than the odometry kept";
+  EXPECT_EQ(DescribePlateOutcome(stale), "plate '999' at 12.300 s ignored (stale): older than the odometry kept");
 }
 
 }  // namespace

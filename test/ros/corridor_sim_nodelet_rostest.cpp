@@ -146,6 +146,26 @@ TEST(LoadCorridorSimOptions, RejectsNegativeOrMistypedValuesNamingTheParameter) 
   EXPECT_THROW(LoadCorridorSimOptions(nh), ParameterError);
 }
 
+TEST(LoadCorridorSimOptions, CameraSizeAndIntrinsicsOverrideTheWorldsAndAreChecked) {
+  ros::NodeHandle nh("~camera_values");
+  nh.setParam("world", PrivateParam<std::string>("world"));
+  nh.setParam("camera/width_px", 1280);
+  nh.setParam("camera/height_px", 720);
+  nh.setParam("camera/fy_px", 1010.0);
+  const CameraOptions camera = LoadCorridorSimOptions(nh).world.sensors.camera;
+  EXPECT_EQ(camera.width_px, 1280);
+  EXPECT_EQ(camera.height_px, 720);
+  EXPECT_DOUBLE_EQ(camera.fy_px, 1010.0);
+  EXPECT_DOUBLE_EQ(camera.fx_px, 0.0);  // still derived from the field of view
+  nh.setParam("camera/cy_px", 720.0);   // beyond the last row
+  try {
+    LoadCorridorSimOptions(nh);
+    FAIL() << "no error";
+  } catch (const ParameterError& e) {
+    EXPECT_NE(std::string::npos, std::string(e.what()).find(nh.resolveName("camera/cy_px"))) << e.what();
+  }
+}
+
 TEST(LoadCorridorSimOptions, ReadsValuesOverDefaults) {
   ros::NodeHandle nh("~good_values");
   nh.setParam("world", PrivateParam<std::string>("world"));

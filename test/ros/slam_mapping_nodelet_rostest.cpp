@@ -108,6 +108,16 @@ TEST(LoadSlamMappingOptions, RejectsBadValuesNamingTheParameter) {
   }
 }
 
+TEST(LoadSlamMappingOptions, TheRoomPatternIsTheBuildingsAndMustBeARegex) {
+  ros::NodeHandle nh("~rooms");
+  EXPECT_EQ(LoadSlamMappingOptions(nh).slam.room_pattern, kDefaultRoomPattern);
+  nh.setParam("room_pattern", std::string("[0-9]{3}|WC"));
+  EXPECT_EQ(LoadSlamMappingOptions(nh).slam.room_pattern, "[0-9]{3}|WC");
+  nh.setParam("room_pattern", std::string("[0-9"));
+  ExpectErrorNaming(nh, "room_pattern");
+  nh.deleteParam("room_pattern");
+}
+
 // The nodelet, in the manager, while the robot drives.
 TEST(SlamMappingNodelet, MapsTheCorridorReadsAPlateAnswersServicesAndSavesLoadableMaps) {
   ros::NodeHandle nh, pnh("~");

@@ -120,6 +120,20 @@ TEST(LoadTextExtractorOptions, RejectsUnquotedOrInvalidKnownRoomsAndABadPattern)
   nh.deleteParam("validator/known_rooms");
   nh.setParam("validator/pattern", std::string("[0-9"));
   ExpectErrorNaming(nh, "validator/pattern");
+  nh.deleteParam("validator/pattern");
+  nh.setParam("room_pattern", std::string("[0-9"));
+  ExpectErrorNaming(nh, "room_pattern");
+}
+
+TEST(LoadTextExtractorOptions, RoomPatternAndItsOlderNameSetTheValidatorsPattern) {
+  ros::NodeHandle nh("~room_pattern");
+  EXPECT_EQ(LoadTextExtractorOptions(nh).validator.pattern, kDefaultRoomPattern);
+  nh.setParam("room_pattern", std::string("[0-9]{3}|WC"));
+  EXPECT_EQ(LoadTextExtractorOptions(nh).validator.pattern, "[0-9]{3}|WC");
+  nh.setParam("validator/pattern", std::string("[0-9]{3}"));
+  ExpectErrorNaming(nh, "validator/pattern");  // both names: the same option twice
+  nh.deleteParam("room_pattern");
+  EXPECT_EQ(LoadTextExtractorOptions(nh).validator.pattern, "[0-9]{3}");
 }
 
 TEST(LoadTextExtractorOptions, AMissingTesseractModelNamesTheFolderParameterAndThePath) {
@@ -132,6 +146,27 @@ TEST(LoadTextExtractorOptions, AMissingTesseractModelNamesTheFolderParameterAndT
     const std::string what = e.what();
     EXPECT_NE(what.find(nh.resolveName("ocr/tessdata_dir")), std::string::npos) << what;
     EXPECT_NE(what.find("/nonexistent/tessdata/eng.traineddata"), std::string::npos) << what;
+  }
+}
+
+TEST(LoadBandGeometryOptions, OffByDefaultReadsTheMountAndPlatesWhenOnAndNamesABadValue) {
+  ros::NodeHandle nh("~band_geometry");
+  EXPECT_FALSE(LoadBandGeometryOptions(nh).has_value());
+  nh.setParam("detector/band_from_geometry", true);
+  nh.setParam("detector/band_geometry/camera_height_m", 1.1);
+  nh.setParam("detector/band_geometry/text_top_max_m", 1.8);
+  const std::optional<BandGeometryOptions> g = LoadBandGeometryOptions(nh);
+  ASSERT_TRUE(g.has_value());
+  EXPECT_DOUBLE_EQ(g->mount_height_m, 1.1);
+  EXPECT_DOUBLE_EQ(g->text_top_max_m, 1.8);
+  EXPECT_DOUBLE_EQ(g->max_distance_m, BandGeometryOptions{}.max_distance_m);
+  nh.setParam("detector/band_geometry/max_distance_m", 0.5);  // below min_distance_m
+  try {
+    LoadBandGeometryOptions(nh);
+    FAIL() << "no error";
+  } catch (const ParameterError& e) {
+    EXPECT_NE(std::string(e.what()).find(nh.resolveName("detector/band_geometry/max_distance_m")),
+              std::string::npos) << e.what();
   }
 }
 

@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <stdexcept>
+#include <string>
 
 #include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <unistd.h>
 
 namespace doorplate_localization {
 namespace {
@@ -284,6 +288,93 @@ TEST(CameraRenderer, RejectsUnusableOptionsAndSigns) {
   EXPECT_THROW(CameraRenderer(world, options), std::invalid_argument);
   world.signs[0].width_m = 0.0;
   EXPECT_THROW(CameraRenderer(world, CameraOptions{}), std::invalid_argument);
+}
+
+TEST(CameraRenderer, AnImageSignShowsThePhotoStretchedToItsSize) {
+  // A 40 × 40 px photo (left half red, right half green) on a 0.3 × 0.15 m sign: stretched 2:1.
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("camera_renderer_test_" + std::to_string(::getpid()) + ".png")).string();
+  cv::Mat photo(40, 40, CV_8UC3, cv::Scalar(0, 0, 255));
+  photo.colRange(20, 40).setTo(cv::Scalar(0, 255, 0));
+  ASSERT_TRUE(cv::imwrite(path, photo));
+  World world = WallWithPlate(false);
+  world.signs[0].image_path = path;
+  const CameraRenderer camera(world, CleanOptions(0.0));
+  std::filesystem::remove(path);  // the texture is made in the constructor
+  const cv::Mat image = camera.RenderClean({0, 0, 0});
+  cv::Mat red, green;
+  cv::inRange(image, cv::Scalar(0, 0, 150), cv::Scalar(90, 90, 255), red);
+  cv::inRange(image, cv::Scalar(0, 150, 0), cv::Scalar(90, 255, 90), green);
+  EXPECT_EQ(cv::countNonZero(BlueMask(image)), 0);  // no drawn plate
+  cv::Point2d left, right, top, bottom;  // the sign's edges: x -0.15..0.15 on the wall at y = 2
+  ASSERT_TRUE(camera.Project({0, 0, 0}, {-0.15, 2.0, 1.2}, &left));
+  ASSERT_TRUE(camera.Project({0, 0, 0}, {0.15, 2.0, 1.2}, &right));
+  ASSERT_TRUE(camera.Project({0, 0, 0}, {0.0, 2.0, 1.275}, &top));
+  ASSERT_TRUE(camera.Project({0, 0, 0}, {0.0, 2.0, 1.125}, &bottom));
+  const cv::Rect r = BoundingBox(red), g = BoundingBox(green);
+  ASSERT_GT(r.area(), 100);
+  ASSERT_GT(g.area(), 100);
+  EXPECT_LT(r.x, g.x);  // the photo's left half is on the image left: read unmirrored
+  EXPECT_NEAR(std::min(r.x, g.x), std::min(left.x, right.x), 1.5);
+  EXPECT_NEAR(std::max(r.x + r.width, g.x + g.width), std::max(left.x, right.x), 1.5);
+  EXPECT_NEAR(r.y, top.y, 1.5);
+  EXPECT_NEAR(r.y + r.height, bottom.y, 1.5);
+  EXPECT_NEAR(r.width, g.width, 2.0);
+}
+
+TEST(CameraRenderer, AnUnreadableImageSignIsAnErrorNamingTheFile) {
+  World world = WallWithPlate(false);
+  world.signs[0].image_path = "/nonexistent/face.png";
+  try {
+    CameraRenderer camera(world, CleanOptions(0.0));
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("signs[0] ('123').image: cannot read image '/nonexistent/face.png'"),
+              std::string::npos) << e.what();
+  }
+}
+
+TEST(CameraRenderer, LightingZonesDarkenWhatIsInsideThem) {
+  World world = WallWithPlate(false);
+  const CameraRenderer lit(world, CleanOptions(0.0));
+  const cv::Vec3b before = lit.RenderClean({0, 0, 0}).at<cv::Vec3b>(100, 100);  // plain wall
+  LightZone dark;
+  dark.min = {-10.0, 1.5};
+  dark.max = {10.0, 2.5};
+  dark.gain = dark.gain_at_max = 0.5;
+  world.lighting.push_back(dark);
+  const CameraRenderer dimmed(world, CleanOptions(0.0));
+  const cv::Mat image = dimmed.RenderClean({0, 0, 0});
+  const cv::Vec3b after = image.at<cv::Vec3b>(100, 100);
+  for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(after[ch], 0.5 * before[ch], 1.0);
+  EXPECT_EQ(image.at<cv::Vec3b>(470, 100), lit.RenderClean({0, 0, 0}).at<cv::Vec3b>(470, 100));  // floor
+}
+
+TEST(CameraRenderer, ExplicitIntrinsicsAt1280x720AreUsedForRenderingAndProjection) {
+  const World world = WallWithPlate(false);
+  CameraOptions options = CleanOptions(0.0);
+  options.width_px = 1280;
+  options.height_px = 720;
+  options.fx_px = 900.0;
+  options.fy_px = 880.0;
+  options.cx_px = 600.0;
+  options.cy_px = 380.0;
+  const CameraRenderer camera(world, options);
+  EXPECT_DOUBLE_EQ(camera.intrinsics().fx_px, 900.0);
+  EXPECT_DOUBLE_EQ(camera.intrinsics().fy_px, 880.0);
+  EXPECT_DOUBLE_EQ(camera.intrinsics().cx_px, 600.0);
+  EXPECT_DOUBLE_EQ(camera.intrinsics().cy_px, 380.0);
+  const cv::Mat image = camera.RenderClean({0, 0, 0});
+  EXPECT_EQ(image.cols, 1280);
+  EXPECT_EQ(image.rows, 720);
+  const cv::Rect box = BoundingBox(BlueMask(image));
+  EXPECT_NEAR(Centre(box).x, 600.0, 1.0);  // plate straight ahead, at camera height
+  EXPECT_NEAR(Centre(box).y, 380.0, 1.0);
+  cv::Mat white;  // the plate's border is drawn in the text colour
+  cv::inRange(image, cv::Scalar(215, 215, 215), cv::Scalar(255, 255, 255), white);
+  const cv::Rect plate = BoundingBox(BlueMask(image) | white);
+  EXPECT_NEAR(plate.width, 900.0 * 0.3 / 2.0, 1.5);   // 0.3 m wide at 2 m
+  EXPECT_NEAR(plate.height, 880.0 * 0.15 / 2.0, 1.5);
 }
 
 }  // namespace

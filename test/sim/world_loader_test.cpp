@@ -1,8 +1,15 @@
 #include "doorplate_localization/sim/world_loader.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <filesystem>
+#include <fstream>
 #include <functional>
+#include <set>
+#include <utility>
+
+#include <opencv2/imgcodecs.hpp>
 
 namespace doorplate_localization {
 namespace {
@@ -47,8 +54,36 @@ TEST(LoadWorldFile, ReadsThePaperRealCorridor) {
   EXPECT_FALSE(world.surfaces.empty());
 }
 
+// Issue 15 item 5: the world must stay as hard as specified (small, dim, varied, unevenly lit).
+TEST(LoadWorldFile, SmallDimPlatesIsSmallLowContrastAndUnevenlyLit) {
+  const World world = LoadWorldFile(kWorlds + "small_dim_plates.yaml");
+  EXPECT_NEAR(world.walls[0].segment.Length(), 25.0, 1e-9);
+  ASSERT_EQ(world.Plates().size(), 10u);
+  const auto luma = [](const ColorRgb& c) { return 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2]; };
+  std::set<std::pair<int, bool>> looks;
+  for (const TextSign* plate : world.Plates()) {
+    SCOPED_TRACE(plate->text);
+    EXPECT_DOUBLE_EQ(plate->width_m, 0.18);
+    EXPECT_DOUBLE_EQ(plate->height_m, 0.09);
+    EXPECT_GE(plate->center_height_m, 1.45);
+    EXPECT_LE(plate->center_height_m, 1.78);
+    EXPECT_LT(luma(plate->background) - luma(plate->foreground), 110.0);  // the defaults differ by 222
+    EXPECT_GT(luma(plate->background) - luma(plate->foreground), 40.0);   // still readable
+    looks.insert({static_cast<int>(plate->font), plate->italic});
+  }
+  EXPECT_GE(looks.size(), 5u);
+  double darkest = 1.0, brightest = 1.0;
+  for (double x = 0.0; x <= 25.0; x += 0.25) {
+    darkest = std::min(darkest, world.LightingGain({x, 1.0}));
+    brightest = std::max(brightest, world.LightingGain({x, 1.0}));
+  }
+  EXPECT_LT(darkest, 0.5);
+  EXPECT_GT(brightest, 1.5);
+}
+
 TEST(LoadWorldFile, ReadsEveryBuiltInWorld) {
-  for (const char* name : {"paper_sim_closed_doors", "paper_sim_open_doors", "paper_real_corridor", "hospital_ward"}) {
+  for (const char* name : {"paper_sim_closed_doors", "paper_sim_open_doors", "paper_real_corridor", "hospital_ward",
+                           "small_dim_plates"}) {
     EXPECT_NO_THROW(LoadWorldFile(kWorlds + name + ".yaml")) << name;
   }
   const World open = LoadWorldFile(kWorlds + "paper_sim_open_doors.yaml");
@@ -98,6 +133,101 @@ TEST(ParseWorldYaml, SensorOverridesAreValidated) {
 
 TEST(LoadWorldFile, AMissingFileIsNamed) {
   EXPECT_EQ(ErrorOf([] { LoadWorldFile("/nonexistent/x.yaml"); }), "/nonexistent/x.yaml: cannot open world file");
+}
+
+// A temporary folder holding a world file and a 40 × 20 px image: left half red, right half green.
+class WorldWithImage : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("world_loader_test_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(dir_ / "faces");
+    cv::Mat face(20, 40, CV_8UC3, cv::Scalar(0, 0, 255));
+    face.colRange(20, 40).setTo(cv::Scalar(0, 255, 0));
+    ASSERT_TRUE(cv::imwrite((dir_ / "faces" / "plate.png").string(), face));
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::string Write(const std::string& yaml) {
+    const std::string path = (dir_ / "world.yaml").string();
+    std::ofstream(path) << yaml;
+    return path;
+  }
+  std::filesystem::path dir_;
+};
+
+TEST_F(WorldWithImage, ImageSignPathsAreRelativeToTheWorldFile) {
+  const World world =
+      LoadWorldFile(Write(Replace(kMinimal, "along_door_m: 0.7}", "along_door_m: 0.7, image: faces/plate.png}")));
+  ASSERT_EQ(world.signs.size(), 1u);
+  EXPECT_EQ(world.signs[0].image_path, (dir_ / "faces" / "plate.png").string());
+  EXPECT_EQ(world.signs[0].text, "214");  // still the ground truth
+}
+
+TEST_F(WorldWithImage, AMissingOrUnreadableImageNamesTheFieldAndTheFile) {
+  const std::string missing = Write(Replace(kMinimal, "along_door_m: 0.7}", "along_door_m: 0.7, image: no.png}"));
+  const std::string error = ErrorOf([&] { LoadWorldFile(missing); });
+  EXPECT_NE(error.find(missing + ": plates[0].image: cannot read image '" + (dir_ / "no.png").string() + "'"),
+            std::string::npos) << error;
+  std::ofstream(dir_ / "text.png") << "not a png";
+  const std::string garbage = Write(Replace(kMinimal, "along_door_m: 0.7}", "along_door_m: 0.7, image: text.png}"));
+  EXPECT_NE(ErrorOf([&] { LoadWorldFile(garbage); }).find("plates[0].image: cannot read image"), std::string::npos);
+}
+
+TEST(ParseWorldYaml, ReadsFontsTextSizeAndStrokes) {
+  const World world = ParseWorldYaml(
+      Replace(kMinimal, "along_door_m: 0.7}",
+              "along_door_m: 0.7, size_m: [0.18, 0.09], font: complex_small, italic: true, text_height_m: 0.025, "
+              "stroke_to_cap_height: 0.08}"),
+      "w.yaml");
+  const TextSign& sign = world.signs.at(0);
+  EXPECT_EQ(sign.font, SignFont::kComplexSmall);
+  EXPECT_TRUE(sign.italic);
+  EXPECT_DOUBLE_EQ(sign.text_height_m, 0.025);
+  EXPECT_DOUBLE_EQ(sign.stroke_to_cap_height, 0.08);
+  EXPECT_NE(ErrorOf([] { ParseWorldYaml(Replace(kMinimal, "along_door_m: 0.7}", "along_door_m: 0.7, font: arial}"),
+                                       "w.yaml"); }).find("plates[0].font: font must be one of"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf([] { ParseWorldYaml(Replace(kMinimal, "along_door_m: 0.7}",
+                                                "along_door_m: 0.7, text_height_m: 0.5}"), "w.yaml"); })
+                .find("text_height_m must be <= the sign height"),
+            std::string::npos);
+}
+
+TEST(ParseWorldYaml, ReadsLightingZones) {
+  const World world = ParseWorldYaml(
+      std::string(kMinimal) +
+          "lighting:\n  - {min: [2, -1], max: [6, 3], gain: 0.3, gain_at_max: 1.8, edge_m: 0.5}\n"
+          "  - {min: [0, 0], max: [1, 2], gain: 2, axis: y}\n",
+      "w.yaml");
+  ASSERT_EQ(world.lighting.size(), 2u);
+  EXPECT_DOUBLE_EQ(world.lighting[0].gain_at_max, 1.8);
+  EXPECT_DOUBLE_EQ(world.lighting[0].edge_m, 0.5);
+  EXPECT_TRUE(world.lighting[0].axis_x);
+  EXPECT_DOUBLE_EQ(world.lighting[1].gain_at_max, 2.0);  // defaults to gain: a uniform zone
+  EXPECT_FALSE(world.lighting[1].axis_x);
+  EXPECT_EQ(ErrorOf([] { ParseWorldYaml(std::string(kMinimal) + "lighting:\n  - {min: [2, 0], max: [1, 2]}\n",
+                                        "w.yaml"); }),
+            "w.yaml: lighting[0].max: must be >= min in x and y");
+}
+
+TEST(ParseWorldYaml, ReadsCameraIntrinsics) {
+  const World world = ParseWorldYaml(
+      std::string(kMinimal) +
+          "sensors: {camera: {width_px: 1280, height_px: 720, fx_px: 900, fy_px: 905, cx_px: 630.5, cy_px: 370}}\n",
+      "w.yaml");
+  const CameraOptions& c = world.sensors.camera;
+  EXPECT_EQ(c.width_px, 1280);
+  EXPECT_EQ(c.height_px, 720);
+  EXPECT_DOUBLE_EQ(c.fx_px, 900.0);
+  EXPECT_DOUBLE_EQ(c.fy_px, 905.0);
+  EXPECT_DOUBLE_EQ(c.cx_px, 630.5);
+  EXPECT_DOUBLE_EQ(c.cy_px, 370.0);
+  EXPECT_EQ(ErrorOf([] { ParseWorldYaml(std::string(kMinimal) + "sensors: {camera: {cx_px: 700}}\n", "w.yaml"); }),
+            "w.yaml: sensors.camera: cx_px must be in [0, width_px - 1]");
+  EXPECT_EQ(ErrorOf([] { ParseWorldYaml(std::string(kMinimal) +
+                                            "sensors: {camera: {fx_px: 500, horizontal_fov_deg: 70}}\n", "w.yaml"); }),
+            "w.yaml: sensors.camera: give horizontal_fov_deg or fx_px, not both");
 }
 
 }  // namespace

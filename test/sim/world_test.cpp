@@ -75,5 +75,29 @@ TEST(World, SignPositionAndCorridorNormal) {
   EXPECT_EQ(world.Plates().size(), 1u);
 }
 
+TEST(World, LightingGainIsOneOutsideZonesAndRampsInsideAndAtSoftEdges) {
+  World world;
+  EXPECT_DOUBLE_EQ(world.LightingGain({3.0, 1.0}), 1.0);
+  LightZone dark;  // x 10..20: gain 0.4 at x = 10 rising to 1.6 at x = 20, 1 m soft edge
+  dark.min = {10.0, -1.0};
+  dark.max = {20.0, 3.0};
+  dark.gain = 0.4;
+  dark.gain_at_max = 1.6;
+  dark.edge_m = 1.0;
+  world.lighting.push_back(dark);
+  EXPECT_DOUBLE_EQ(world.LightingGain({5.0, 1.0}), 1.0);
+  EXPECT_NEAR(world.LightingGain({10.0, 1.0}), 0.4, 1e-12);
+  EXPECT_NEAR(world.LightingGain({15.0, 1.0}), 1.0, 1e-12);
+  EXPECT_NEAR(world.LightingGain({20.0, 1.0}), 1.6, 1e-12);
+  EXPECT_NEAR(world.LightingGain({9.5, 1.0}), 0.7, 1e-12);  // half way through the edge: half the effect
+  EXPECT_DOUBLE_EQ(world.LightingGain({8.9, 1.0}), 1.0);
+  LightZone bright;  // overlapping zones multiply
+  bright.min = {0.0, -1.0};
+  bright.max = {12.0, 3.0};
+  bright.gain = bright.gain_at_max = 2.0;
+  world.lighting.push_back(bright);
+  EXPECT_NEAR(world.LightingGain({10.0, 1.0}), 0.8, 1e-12);
+}
+
 }  // namespace
 }  // namespace doorplate_localization

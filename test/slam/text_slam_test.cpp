@@ -209,6 +209,53 @@ TEST(TextSlam, TheTextMapListsPlatesByWallWithDistancesFromTheMapAndFromOdometry
   EXPECT_NEAR(map.adjacent[0].distance_m, 1.2, 0.15);
 }
 
+TEST(TextSlam, AReadingWithOrWithoutSeparatorsReobservesTheSamePlate) {
+  TextSlam slam(FewParticles(4));
+  slam.AddScan(test::Scan(test::Room(), {0, 0, 0}), {0, 0, 0}, 0);
+  EXPECT_EQ(slam.AddPlate(Sighting("E14-295", M_PI / 2, 1.0), {}).outcome, PlateOutcome::kNewLandmark);
+  EXPECT_EQ(slam.AddPlate(Sighting("E14295", M_PI / 2, 1.1), {}).outcome, PlateOutcome::kReobserved);
+  EXPECT_EQ(slam.AddPlate(Sighting("e14 295", M_PI / 2, 1.0), {}).outcome, PlateOutcome::kReobserved);
+  const std::vector<SlamLandmark> plates = slam.BestLandmarks();
+  ASSERT_EQ(plates.size(), 1u);
+  EXPECT_EQ(plates[0].text, "E14-295");  // the first printed form
+  EXPECT_EQ(plates[0].observations, 3);
+}
+
+TEST(TextSlam, LookAlikeReadingsAtTheSamePlaceAreOtherLandmarks) {
+  TextSlam slam(FewParticles(4));
+  slam.AddScan(test::Scan(test::Room(), {0, 0, 0}), {0, 0, 0}, 0);
+  EXPECT_EQ(slam.AddPlate(Sighting("312A", M_PI / 2, 1.0), {}).outcome, PlateOutcome::kNewLandmark);
+  EXPECT_EQ(slam.AddPlate(Sighting("312B", M_PI / 2, 1.0), {}).outcome, PlateOutcome::kNewLandmark);
+  EXPECT_EQ(slam.AddPlate(Sighting("32-076", -M_PI / 2, 1.0), {}).outcome, PlateOutcome::kNewLandmark);
+  EXPECT_EQ(slam.AddPlate(Sighting("32-069T", -M_PI / 2, 1.0), {}).outcome, PlateOutcome::kNewLandmark);
+  EXPECT_EQ(slam.BestLandmarks().size(), 4u);
+}
+
+TEST(TextSlam, ReadingsOutsideTheBuildingsRoomPatternAreIgnoredAndThePatternIsMapped) {
+  TextSlamOptions o = FewParticles(3);
+  o.room_pattern = "[0-9]{3}";
+  TextSlam slam(o);
+  slam.AddScan(test::Scan(test::Room(), {0, 0, 0}), {0, 0, 0}, 0);
+  const TextSlamPlateResult exit = slam.AddPlate(Sighting("EXIT", M_PI / 2, 1.0), {});
+  EXPECT_EQ(exit.outcome, PlateOutcome::kNotARoomId);
+  EXPECT_FALSE(exit.used());
+  EXPECT_NE(exit.reason.find("room_pattern"), std::string::npos) << exit.reason;
+  EXPECT_EQ(slam.AddPlate(Sighting("E14-295", M_PI / 2, 1.0), {}).outcome, PlateOutcome::kNotARoomId);
+  EXPECT_EQ(slam.AddPlate(Sighting("201", M_PI / 2, 1.0), {}).outcome, PlateOutcome::kNewLandmark);
+  const TextMap map = slam.BuildTextMap();
+  EXPECT_EQ(map.room_pattern, "[0-9]{3}");
+  ASSERT_EQ(map.landmarks.size(), 1u);
+  EXPECT_EQ(ParseTextMap(TextMapToYaml(map), "mem").room_pattern, "[0-9]{3}");  // it saves and loads
+  TextSlamOptions bad = FewParticles(3);
+  bad.room_pattern = "[0-9";
+  try {
+    TextSlam t(bad);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("TextSlamOptions.room_pattern"), std::string::npos) << e.what();
+  }
+}
+
 TEST(TextSlam, TextOptionsHaveNamesInTheSharedTable) {
   TextSlamOptions o;
   SetTextSlamOption("text.plate_sigma_m", 0.3, &o);

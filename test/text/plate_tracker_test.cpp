@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -77,6 +79,23 @@ TEST(PlateTracker, TheMajorityOfConfidenceWeightedVotesWins) {
   EXPECT_EQ(reports[0].text, "214");
   EXPECT_NEAR(reports[0].vote_share, 4.0 / 6.0, 1e-9);
   EXPECT_NEAR(reports[0].confidence, 0.5 * 4.0 / 6.0, 1e-9);
+}
+
+TEST(PlateTracker, SpellingsOfOneRoomVoteTogetherAndTheCommonestSpellingIsReported) {
+  PlateTracker tracker({});
+  // E14-295 in three spellings (4 frames) against a look-alike E14-296 (2 frames, more than any spelling).
+  const std::vector<std::pair<int, std::string>> frames = {
+      {500, "E14296"}, {460, "E14-295"}, {420, "E14295"}, {380, "E14-296"}, {340, "E14-295"}, {300, "E14:295"}};
+  std::vector<PlateReport> reports;
+  double t = 0.0;
+  for (const auto& [x, text] : frames) {
+    for (const auto& r : tracker.Update({At(x, text, 0.5)}, t)) reports.push_back(r);
+    t += kFrameS;
+  }
+  ASSERT_EQ(reports.size(), 1u);
+  EXPECT_EQ(reports[0].text, "E14-295");
+  EXPECT_NEAR(reports[0].vote_share, 4.0 / 6.0, 1e-9);
+  EXPECT_NEAR(reports[0].mean_confidence, 0.5, 1e-9);
 }
 
 TEST(PlateTracker, BoxesWithoutAValidReadingAreTrackedButDoNotVote) {
@@ -159,6 +178,77 @@ TEST(PlateTracker, RejectsANonPositiveFocalLengthNamingTheField) {
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("fx_px"), std::string::npos);
+  }
+}
+
+// Drives one plate past the camera, reading only the boxes PlanReadings asks for; returns how many
+// boxes were read and every report.
+int DriveWithSchedule(PlateTracker& tracker, const std::vector<int>& centers_x,
+                      std::vector<PlateReport>* reports, const std::string& text = "214") {
+  int reads = 0;
+  double t = 0.0;
+  for (const int x : centers_x) {
+    PlateObservation o = At(x, text);
+    if (!tracker.PlanReadings({o.box_px}, t).at(0)) {
+      o.text = o.raw_text = "";
+      o.confidence = 0.0;
+      o.read_attempted = false;
+    } else {
+      ++reads;
+    }
+    for (const PlateReport& r : tracker.Update({o}, t)) reports->push_back(r);
+    t += kFrameS;
+  }
+  return reads;
+}
+
+TEST(PlateTracker, TheDefaultScheduleReadsEveryFrameUntilThePlateIsReported) {
+  PlateTracker tracker({});
+  std::vector<PlateReport> reports;
+  // 13 frames; the crossing (320 → 280) is the 8th, after which the reported plate is not read again.
+  EXPECT_EQ(DriveWithSchedule(tracker, Steps(560, 60, -40), &reports), 8);
+  EXPECT_EQ(reports.size(), 1u);
+}
+
+TEST(PlateTracker, ASlowRecognisersScheduleReadsAPlateAFewTimesAndStillReportsIt) {
+  PlateTrackerOptions options;
+  options.read_every_n_frames = 2;
+  options.enough_votes = 3;
+  PlateTracker tracker(options);
+  std::vector<PlateReport> reports;
+  // Frames 1, 3, 5 are read; three agreeing votes are enough: no more reads though 13 frames pass.
+  EXPECT_EQ(DriveWithSchedule(tracker, Steps(560, 60, -40), &reports), 3);
+  ASSERT_EQ(reports.size(), 1u);
+  EXPECT_EQ(reports[0].text, "214");
+  EXPECT_EQ(reports[0].voted_frame_count, 3);
+  EXPECT_EQ(reports[0].observed_frame_count, 8);  // reported at the crossing, the 8th frame
+}
+
+TEST(PlateTracker, AnUnreadableBoxIsTriedAtMostMaxReadingsPerTrackTimes) {
+  PlateTrackerOptions options;
+  options.max_readings_per_track = 4;
+  PlateTracker tracker(options);
+  std::vector<PlateReport> reports;
+  EXPECT_EQ(DriveWithSchedule(tracker, Steps(560, 60, -40), &reports, ""), 4);
+  EXPECT_TRUE(reports.empty());
+}
+
+TEST(PlateTracker, PlanningDoesNotChangeTheTracker) {
+  PlateTracker tracker({});
+  tracker.Update({At(500)}, 0.0);
+  const std::vector<bool> plan = tracker.PlanReadings({At(460).box_px, At(100, "", 0.0, 400).box_px}, 0.1);
+  EXPECT_EQ(plan, std::vector<bool>({true, true}));
+  EXPECT_EQ(tracker.num_tracks(), 1u);
+}
+
+TEST(PlateTracker, RefusesABadScheduleNamingTheField) {
+  PlateTrackerOptions options;
+  options.read_every_n_frames = 0;
+  try {
+    PlateTracker tracker(options);
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("read_every_n_frames"), std::string::npos) << e.what();
   }
 }
 

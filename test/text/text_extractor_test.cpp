@@ -1,6 +1,8 @@
 #include "doorplate_localization/text/text_extractor.h"
 
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -86,6 +88,62 @@ TEST(TextExtractor, SendsAtMostMaxRegionsPerFrameBoxesToTheOcr) {
   extractor.Process(image, 0.0);
   EXPECT_EQ(calls, 2);
   EXPECT_EQ(extractor.last_observations().size(), 2u);
+}
+
+// Answers a fixed reading: lets the tests set the recogniser's confidence.
+class FixedOcr : public OcrEngine {
+ public:
+  explicit FixedOcr(OcrReading reading) : reading_(std::move(reading)) {}
+  OcrReading Read(const cv::Mat&) override { return reading_; }
+
+ private:
+  OcrReading reading_;
+};
+
+TEST(TextExtractor, ReadFrameReadsAStillImageWithoutTouchingTheTracker) {
+  TextExtractor extractor({});
+  const std::vector<PlateObservation> reads = extractor.ReadFrame(Frame(400, 5));
+  ASSERT_EQ(reads.size(), 1u);
+  EXPECT_EQ(reads[0].text, "214");
+  EXPECT_EQ(reads[0].raw_text, "214");
+  EXPECT_GT(reads[0].raw_confidence, 0.0);
+  // The tracker saw nothing: driving past afterwards still reports the plate exactly once.
+  EXPECT_EQ(DrivePast(extractor, 560, 80, -40).size(), 1u);
+}
+
+TEST(TextExtractor, ReadingsBelowTheRecognisersMinimumConfidenceAreNotValidated) {
+  TextExtractorOptions options;
+  options.ocr.min_confidence = 0.5;
+  TextExtractor unsure(options, std::make_unique<MserBandDetector>(options.detector),
+                       std::make_unique<FixedOcr>(OcrReading{"214", 0.4}));
+  const std::vector<PlateObservation> low = unsure.ReadFrame(Frame(400, 6));
+  ASSERT_EQ(low.size(), 1u);
+  EXPECT_EQ(low[0].raw_text, "214");  // kept for diagnostics
+  EXPECT_EQ(low[0].text, "");
+  TextExtractor sure(options, std::make_unique<MserBandDetector>(options.detector),
+                     std::make_unique<FixedOcr>(OcrReading{"214", 0.6}));
+  EXPECT_EQ(sure.ReadFrame(Frame(400, 6)).at(0).text, "214");
+}
+
+TEST(TextExtractor, DetectorAndRecognizerNamesParseAndPrintBack) {
+  EXPECT_EQ(ParseTextDetectorType("db", "detector"), TextDetectorType::kDb);
+  EXPECT_EQ(ToString(ParseTextDetectorType("mser", "detector")), "mser");
+  EXPECT_EQ(ParseTextRecognizerType("ppocr", "recognizer"), TextRecognizerType::kPpOcr);
+  EXPECT_EQ(ToString(ParseTextRecognizerType("tesseract", "recognizer")), "tesseract");
+  try {
+    ParseTextRecognizerType("easyocr", "~recognizer");
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("~recognizer"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("tesseract, ppocr"), std::string::npos) << e.what();
+  }
+}
+
+TEST(TextExtractor, AskingForALearnedModelThatIsNotInstalledNamesItsFile) {
+  TextExtractorOptions options;
+  options.recognizer_type = TextRecognizerType::kPpOcr;
+  options.ppocr.model_dir = "/nonexistent/models";
+  EXPECT_THROW({ TextExtractor extractor(options); }, std::runtime_error);
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 //
 // Requests: "<room>" (e.g. "105"), or "<room>@<wall>" (e.g. "220@north") to pick one plate of a room number
 // that the map holds more than once (the `wall` label of the landmark). Surrounding whitespace is ignored.
+// Room numbers are compared in canonical form (common/room_id.h, TextMap::Find): "E14-295", "E14295" and
+// "e14 295" reach the same plate; look-alikes ("312A"/"312B", "32-076"/"32-069T") stay apart.
 //
 // Repeated room numbers: duplicate_rule "nearest" goes to the plate closest (straight line, map frame) to
 // the robot's current pose and says which plates there were; "refuse" refuses and lists the plates with the
@@ -30,7 +32,7 @@ struct RoomGoalPlannerOptions {
 // plate position + wall_distance_m along the plate's facing direction, theta = the plate's yaw + pi (the
 // robot looks at the door; the plate faces the corridor).
 struct RoomGoal {
-  std::string room;     // the room number asked for (without "@wall")
+  std::string room;     // the room number as asked for (without "@wall"; the plate's text may be spelled otherwise)
   int landmark = -1;    // index into TextMap::landmarks of the chosen plate
   Pose2D pose;
   std::string note;     // how a repeated room number was resolved, "" otherwise

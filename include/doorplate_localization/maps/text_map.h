@@ -7,13 +7,15 @@
 #include <vector>
 
 #include "doorplate_localization/common/geometry2d.h"
+#include "doorplate_localization/common/room_id.h"
 
 namespace doorplate_localization {
 
 // One doorplate. `pose` is in the map frame: position = the plate's centre projected on the floor plane
 // (on the wall surface), theta = the direction the plate faces (the wall normal pointing into the corridor).
 struct TextLandmark {
-  std::string text;               // room number as read (validated), e.g. "214"; may repeat in a map
+  std::string text;               // room number as printed (validated), e.g. "214", "E14-295"; may repeat
+                                  // in a map; fits the map's room_pattern (canonical form, common/room_id.h)
   Pose2D pose;
   double height_m = 1.6;          // plate centre above the floor
   std::string wall;               // which wall it is on (free label, e.g. "north" or "left"), "" if unknown
@@ -33,12 +35,16 @@ struct TextMap {
   int format_version = 1;
   std::string frame_id = "map";
   std::string occupancy_map;      // the matching map_server YAML, relative to the text map's folder ("" if none)
+  // The building's room identifier format: an ECMAScript regex every landmark text's canonical form
+  // (common/room_id.h) matches; the default accepts "16-186", "E14-295", "B/1404", "39.A", "21/52", "5D", ...
+  std::string room_pattern = kDefaultRoomPattern;
   std::vector<TextLandmark> landmarks;
   std::vector<AdjacentDistance> adjacent;
 
-  // Indexes of every landmark with exactly this text (repeated room numbers give several).
+  // Indexes of every landmark naming the same room as `text` (SameRoom: canonical forms, so "E14295" finds
+  // "E14-295"; repeated room numbers give several), ascending; empty if none.
   std::vector<int> Find(const std::string& text) const;
-  // All distinct texts, sorted.
+  // One text per distinct room (canonical form), as first printed in landmark order; sorted.
   std::vector<std::string> Texts() const;
 };
 

@@ -24,8 +24,8 @@ struct PlateReading {
 // must be in [0, 1], got 1.5"). A left camera must report a bearing in (0, pi), a right one in (-pi, 0).
 std::string ValidatePlateReading(const PlateReading& reading);
 
-// Canonical form of a plate text for matching: ASCII letters upper-cased, spaces and '-' removed
-// ("b-12 " -> "B12").
+// Canonical form of a plate text for matching: CanonicalRoomId (common/room_id.h): ASCII letters
+// upper-cased, separators ('-' '.' '·' '/' whitespace and their OCR variants) removed ("b-12 " -> "B12").
 std::string CanonicalPlateText(const std::string& text);
 
 }  // namespace doorplate_localization

@@ -1,5 +1,7 @@
 // How likely it is that a plate showing one text is read as another: an OCR confusion model over room
-// numbers. Used by the plate likelihood model and the plate pose sampler.
+// numbers. Used by the plate likelihood model and the plate pose sampler. Texts are compared in their
+// canonical form (common/room_id.h): separators do not count ("E14-295" read as "E14295" is identical),
+// letters and digits do ("312A" read for "312B" is one non-confusable substitution).
 #pragma once
 
 #include <string>
@@ -36,7 +38,7 @@ class TextMatcher {
   // insertion or deletion) is needed; 0 if more edits are needed.
   double Similarity(const std::string& read, const std::string& truth) const;
 
-  // P(read | plate shows truth) for a reader with confidence c: c if identical, else
+  // P(read | plate shows truth) for a reader with confidence c: c if the same room (SameRoom), else
   // (1 - c) · Similarity(read, truth).
   double MatchProbability(const std::string& read, double confidence, const std::string& truth) const;
 

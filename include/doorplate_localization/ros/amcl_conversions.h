@@ -21,6 +21,7 @@
 #include "doorplate_localization/mcl/particle.h"
 #include "doorplate_localization/mcl/plate_reading.h"
 #include "doorplate_localization/mcl/text_amcl.h"
+#include "doorplate_localization/mcl/text_amcl_session.h"
 #include "doorplate_localization/ros/pose_conversions.h"
 
 namespace doorplate_localization {
@@ -34,12 +35,10 @@ LocalizationScan ToLocalizationScan(const sensor_msgs::LaserScan& msg, const Pos
 // --- doorplate readings ---
 // The plate readings of one TextDetectionArray: one per plate report (IsPlateReport), bearing_rad in
 // base_link = camera.yaw_rad + camera.bearing_sign * detection bearing (pose_conversions.h's ToCameraAxis,
-// wrapped to (-pi, pi]; PlateReadingAt), range from `latest_scan` along that bearing (RangeAlongBearing of
-// mcl/localization_scan.h, with max_range_bearing_error_rad) when given and valid, camera side unknown. Detections whose reading fails
-// ValidatePlateReading (confidence outside [0, 1], NaN bearing) are left out with the problem appended to
-// *problems (may be null).
+// wrapped to (-pi, pi]; PlateReadingAt), no range (TextAmclSession measures it from its scans), camera side
+// unknown. Detections whose reading fails ValidatePlateReading (confidence outside [0, 1], NaN bearing) are
+// left out with the problem appended to *problems (may be null).
 std::vector<PlateReading> ToPlateReadings(const TextDetectionArray& msg, const CameraAxis& camera,
-                                          const LocalizationScan* latest_scan, double max_range_bearing_error_rad,
                                           std::vector<std::string>* problems);
 
 // --- initial pose ---
@@ -60,5 +59,10 @@ geometry_msgs::PoseArray ToParticleCloudMsg(const std::vector<Particle>& particl
                                             const ros::Time& stamp);
 // ~state: "tracking", "converged" or "lost: <reason>" (likelihood_collapse | plate_contradiction).
 std::string StateText(LocalizationState state, LostReason reason);
+
+// One line on what became of a plate reading (TextAmclSession's PlateReadingOutcome), for the log: "plate '214' at
+// 1.571 rad, range 1.20 m: explained 3.10 (best cluster 4.00), 0 reseeded", "plate '214' not used: <why>",
+// "room '999' is not in the text map", "plate '214' at 12.300 s ignored (stale): <detail>".
+std::string DescribePlateOutcome(const PlateReadingOutcome& outcome);
 
 }  // namespace doorplate_localization

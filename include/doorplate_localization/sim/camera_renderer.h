@@ -16,7 +16,8 @@
 
 namespace doorplate_localization {
 
-// Pinhole intrinsics derived from CameraOptions (square pixels, principal point at the centre).
+// Pinhole intrinsics from CameraOptions: its fx/fy/cx/cy where given, else square pixels with fx from the
+// horizontal field of view and the principal point at the image centre.
 struct CameraIntrinsics {
   double fx_px = 0.0, fy_px = 0.0, cx_px = 0.0, cy_px = 0.0;
   int width_px = 0, height_px = 0;

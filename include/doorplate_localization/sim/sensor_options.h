@@ -40,7 +40,13 @@ struct OdometryNoiseOptions {
 struct CameraOptions {
   int width_px = 640;
   int height_px = 480;
-  double horizontal_fov_deg = 60.0;
+  double horizontal_fov_deg = 60.0;     // gives fx_px when fx_px is 0
+  // Pinhole intrinsics in pixels (pixel centres at integers). 0 = derived: fx from horizontal_fov_deg,
+  // fy = fx (square pixels), cx = (width_px - 1) / 2, cy = (height_px - 1) / 2.
+  double fx_px = 0.0;
+  double fy_px = 0.0;
+  double cx_px = 0.0;
+  double cy_px = 0.0;
   std::string side = "left";            // "left" (yaw +90°) or "right" (yaw -90°) of base_link
   double mount_x_m = 0.0;               // optical centre in base_link
   double mount_y_m = 0.0;

@@ -39,7 +39,7 @@ struct Door {
 enum class TextKind { kPlate, kDistractor };
 
 // Hershey fonts of OpenCV, by name in world files.
-enum class SignFont { kSimplex, kDuplex, kComplex, kTriplex };
+enum class SignFont { kSimplex, kDuplex, kComplex, kTriplex, kPlain, kComplexSmall, kScriptSimplex, kScriptComplex };
 
 // A flat rectangle with text on a wall: a doorplate (room number) or distractor text (poster, sign).
 struct TextSign {
@@ -54,7 +54,27 @@ struct TextSign {
   ColorRgb background{245, 245, 240};
   ColorRgb foreground{20, 20, 20};
   SignFont font = SignFont::kSimplex;
+  bool italic = false;
+  double text_height_m = 0.0;          // cap height of the text; 0: a third of height_m (one line)
+  double stroke_to_cap_height = 0.13;  // stroke thickness as a fraction of the cap height
+  // Non-empty: the sign's face is this image (PNG/JPG, absolute or relative to the working directory),
+  // stretched to width_m × height_m; text, colours and font are then not drawn (text stays the truth).
+  std::string image_path;
   bool corridor_side_left = true;  // side of its wall's a→b the sign faces (copied from the wall)
+};
+
+// A region of the world lit brighter or darker than the rest: an axis-aligned box on the floor plan.
+// Walls, doors and signs seen inside it are multiplied by a gain that goes linearly from `gain` at the
+// box's low edge to `gain_at_max` at its high edge along `axis_x` (true: x, false: y). Within `edge_m`
+// outside the box the effect fades out linearly. Zones multiply where they overlap; outside every zone
+// the gain is 1. Floor and ceiling are not affected.
+struct LightZone {
+  Vec2 min{0.0, 0.0};
+  Vec2 max{0.0, 0.0};
+  double gain = 1.0;
+  double gain_at_max = 1.0;
+  bool axis_x = true;
+  double edge_m = 0.0;
 };
 
 // An opaque vertical rectangle the sensors can see: a wall piece, a lintel over an open door, or a
@@ -83,6 +103,7 @@ struct World {
   Pose2D start_pose;
   double robot_radius_m = 0.2;
   SensorOptions sensors;
+  std::vector<LightZone> lighting;
 
   // Derived by BuildSurfaces(): what the laser and the camera see.
   std::vector<Surface> surfaces;
@@ -95,6 +116,8 @@ struct World {
   Vec2 WallNormal(int wall_index, bool left_side) const;
   // Unit normal of a wall pointing into the corridor.
   Vec2 CorridorNormal(int wall_index) const;
+  // Brightness gain of the lighting zones at a floor-plan point (1 outside every zone).
+  double LightingGain(const Vec2& point) const;
 };
 
 // Splits walls at open doors, adds lintels and room boxes; fills `world.surfaces`. Idempotent.

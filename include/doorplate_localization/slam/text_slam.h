@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "doorplate_localization/common/room_id.h"
 #include "doorplate_localization/maps/occupancy_grid.h"
 #include "doorplate_localization/maps/text_map.h"
 #include "doorplate_localization/slam/rbpf_slam.h"
@@ -36,6 +37,10 @@ struct TextSlamOptions {
   double association_radius_m = 3.0;    // a same-text reading this close to a particle's landmark re-observes it
   double text_likelihood_gain = 1.0;    // multiplies the re-observation log-likelihood
   double max_odometry_gap_m = 2.0;      // readings further (odometry) from the last processed scan are ignored
+  // The building's room identifier format (common/room_id.h): readings whose canonical form does not fit are
+  // ignored, and BuildTextMap() writes it as the text map's room_pattern. Readings are associated with
+  // landmarks by canonical form ("E14295" re-observes "E14-295"; "312B" never re-observes "312A").
+  std::string room_pattern = kDefaultRoomPattern;
   // The pose-graph back end (slam_back_end.h): when enabled, the map, the plates and Trajectory() come
   // from the optimized graph instead of the best particle. Its plate_sigma_m is set from the field above.
   SlamBackEndOptions back_end;
@@ -57,6 +62,7 @@ enum class PlateOutcome {
   kRangeOutOfBounds,     // ignored: range outside [min_plate_range_m, max_plate_range_m]
   kNoScanYet,            // ignored: no scan processed yet (the map frame is not defined)
   kTooFarFromLastScan,   // ignored: odometry moved more than max_odometry_gap_m since the last scan
+  kNotARoomId,           // ignored: the text's canonical form does not fit room_pattern
 };
 
 struct TextSlamPlateResult {
@@ -109,6 +115,7 @@ class TextSlam {
   std::optional<double> RangeFromLastScan(double bearing_rad) const;
 
   const TextSlamOptions options_;
+  RoomIdGrammar room_grammar_;          // options_.room_pattern
   RbpfSlam slam_;
   std::optional<RangeScan> last_scan_;  // the last scan fed (ranges for readings without one)
   SlamBackEnd back_end_;

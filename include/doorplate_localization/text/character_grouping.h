@@ -25,7 +25,11 @@ struct LineGroupingOptions {
   // Two candidates are neighbours when all of these hold:
   double max_height_ratio = 1.5;             // taller / shorter box height
   double max_center_offset_to_height = 0.4;  // |Δ centre y| / shorter height
-  double max_gap_to_height = 1.0;            // horizontal gap between boxes / taller height
+  // Horizontal gap between boxes / taller height. 2.4 bridges a printed separator ("16-186", "3.21",
+  // "B/1404"): the hyphen or dot is too small to be a glyph candidate, so the line has a gap of about a
+  // glyph there, up to ~2.2 heights on thin or italic faces with wide spacing (measured on the small,
+  // dim plates world; at 1.0 "E14-295" became the lines "E14" and "295").
+  double max_gap_to_height = 2.4;
   // |Δ ink_grey|; polarity must also match. Loose because blur makes thin strokes (a "1") read much
   // lighter than thick ones at 12–16 px text height.
   double max_ink_difference_grey = 80.0;

@@ -28,21 +28,24 @@ struct BandOptions {
 
 // cv::MSER parameters (see cv::MSER::create); areas in band pixels.
 struct MserOptions {
-  int delta = 5;
-  int min_area_px = 15;   // a thin "1" 8 px high covers ~16 px
+  // delta 2 and the small areas and heights below find 6–8 px glyphs of grey-on-grey plates (18 × 9 cm
+  // plates 2–3 m away; docs/results/real-photos.md "Small, dim plates"); measured on the ward and the
+  // real corridor: the same boxes and readings as the coarser 5 / 15 px / 8 px / 30 grey, at the same cost.
+  int delta = 2;
+  int min_area_px = 8;    // a thin "1" 6 px high covers ~8 px
   int max_area_px = 6000;
   double max_variation = 0.25;
 };
 
 // Per-region character filters, applied to every MSER region.
 struct CharacterFilterOptions {
-  int min_char_height_px = 8;
+  int min_char_height_px = 6;
   int max_char_height_px = 80;
   double min_char_aspect = 0.1;      // box width / height
   double max_char_aspect = 1.2;
   double min_fill_ratio = 0.15;      // region pixels / box area
   double max_fill_ratio = 0.95;
-  double min_contrast_grey = 30.0;   // |mean grey of region − mean grey of rest of its box|
+  double min_contrast_grey = 10.0;   // |mean grey of region − mean grey of rest of its box|
 };
 
 struct MserBandDetectorOptions {
@@ -51,6 +54,11 @@ struct MserBandDetectorOptions {
   CharacterFilterOptions character;
   LineGroupingOptions grouping;
   double box_padding_to_height = 0.15;  // each side, as a fraction of the line height (for OCR)
+  // The pixel sizes above (mser areas, character heights) are for an image this wide; on a wider image
+  // (W > reference_width_px) they are scaled by W / reference_width_px (areas by its square), so a
+  // 1280 × 720 camera with the same field of view needs no other settings. Narrower images (crops) keep
+  // them as given. 0: no scaling.
+  int reference_width_px = 640;
   bool nms_enabled = true;              // false reproduces the paper's plain "MSER" count
   double nms_max_iou = 0.3;
 };

@@ -22,6 +22,8 @@ struct PlateObservation {
   std::string text;        // validated room text; empty if OCR/validation gave nothing (box still tracked)
   double confidence = 0.0; // OCR confidence in [0, 1] (vote weight)
   std::string raw_text;    // OCR output before validation (diagnostics)
+  double raw_confidence = 0.0;  // the recogniser's confidence in raw_text (diagnostics)
+  bool read_attempted = true;   // false: the box was tracked but not sent to the recogniser (PlanReadings)
 };
 
 // A plate reported at its centre-line crossing.
@@ -47,6 +49,12 @@ struct PlateTrackerOptions {
   double max_height_ratio = 1.6;               // taller / shorter box height
   int max_missed_frames = 2;   // a track unseen for more consecutive frames is dropped
   int min_voted_frames = 2;    // a crossing track reports only once it has this many valid readings
+  // Reading schedule (PlanReadings): which tracked boxes go to the recogniser. The defaults read every
+  // box of every frame (cheap Tesseract). A slow learned recogniser reads a track every few frames and
+  // stops once its plate is settled, so its cost is paid a few times per plate, not per frame:
+  int read_every_n_frames = 1;     // a track is read when this many observed frames passed since its last read
+  int max_readings_per_track = 0;  // attempts per track (a distractor that never validates); 0: no limit
+  int enough_votes = 0;            // a track whose leading room has this many valid readings is not read again; 0: never
 };
 
 class PlateTracker {
@@ -62,6 +70,12 @@ class PlateTracker {
   // one (bag loop, simulator restart) resets the tracker first.
   std::vector<PlateReport> Update(const std::vector<PlateObservation>& observations, double stamp_s);
 
+  // Which of this frame's boxes to read, given the tracks so far (the association Update will make):
+  // a box that joins no track is read; a tracked box is read unless its track has reported, used up
+  // max_readings_per_track attempts, has enough_votes valid readings for its leading room, or was read
+  // fewer than read_every_n_frames observed frames ago. Does not change the tracker.
+  std::vector<bool> PlanReadings(const std::vector<cv::Rect>& boxes_px, double stamp_s) const;
+
   void Reset();
   size_t num_tracks() const { return tracks_.size(); }
   double BearingRad(double u_px) const;
@@ -75,6 +89,8 @@ class PlateTracker {
     int missed_frames = 0;
     int observed_frames = 0;
     int voted_frames = 0;
+    int read_attempts = 0;
+    int last_read_frame = 0;  // observed_frames when the track was last read
     bool crossed = false;
     bool reported = false;
     std::map<std::string, double> votes;        // text → summed confidence
@@ -85,6 +101,7 @@ class PlateTracker {
                  std::vector<int>* track_of_observation) const;
   void UpdateTrack(Track& track, const PlateObservation& observation, double stamp_s) const;
   bool MakeReport(const Track& track, PlateReport* report) const;
+  bool WantsReading(const Track& track) const;
 
   const PlateTrackerOptions options_;
   std::vector<Track> tracks_;

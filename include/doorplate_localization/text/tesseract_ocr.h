@@ -28,6 +28,10 @@ struct TesseractOcrOptions {
   // Empty: no restriction.
   std::string whitelist = "0123456789ABCDEFGLNSW";
   OcrPreprocessOptions preprocess;
+  // Readings whose confidence is below this are not validated (TextExtractor). 0: every reading goes
+  // to the validator (Tesseract's mean confidence is poorly calibrated on single lines; the validator
+  // and the multi-frame vote do the filtering).
+  double min_confidence = 0.0;
 };
 
 // The tessdata folder the options resolve to (see TesseractOcrOptions::tessdata_dir).

@@ -19,6 +19,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "doorplate_localization/common/room_id.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/maps/text_map.h"
 #include "doorplate_localization/sim/ground_truth_maps.h"
@@ -94,9 +95,12 @@ int main(int argc, char** argv) {
     const dl::Pose2D world_from_map =
         dl::PoseAtTime(mapping.truth, t0).Compose(mapping.odometry.front().pose.Inverse());
     const dl::Pose2D map_from_world = world_from_map.Inverse();
-    std::set<std::string> true_texts, read_correct, read_wrong;
-    for (const dl::TextLandmark& l : truth_plates.landmarks) true_texts.insert(l.text);
-    for (const dl::PlateReadEvent& r : mapping.plates) (true_texts.count(r.text) ? read_correct : read_wrong).insert(r.text);
+    std::set<std::string> true_texts, read_correct, read_wrong;  // canonical room ids
+    for (const dl::TextLandmark& l : truth_plates.landmarks) true_texts.insert(dl::CanonicalRoomId(l.text));
+    for (const dl::PlateReadEvent& r : mapping.plates) {
+      const std::string room = dl::CanonicalRoomId(r.text);
+      (true_texts.count(room) ? read_correct : read_wrong).insert(room);
+    }
     std::vector<dl::Segment> walls;
     for (const dl::Wall& w : world.walls) walls.push_back(w.segment);
     const dl::CorridorExtent true_extent = dl::MeasureSegments(walls);
