@@ -15,6 +15,11 @@ if [ -f "$out/VERSION" ] && [ "$(cat "$out/VERSION")" = "rapidocr-onnxruntime-$w
   echo "fetch_ocr_models: $out is up to date"; exit 0
 fi
 export PATH="/usr/bin:/bin:/usr/sbin:/sbin:$PATH"  # Debian's python3 (has venv), not a pyenv shim
+# The venv's pip trusts certifi's roots; trust the machine's store instead (as Debian's own pip does), so a
+# site whose proxy CA is installed system-wide works too.
+if [ -z "${PIP_CERT:-}" ] && [ -f /etc/ssl/certs/ca-certificates.crt ]; then
+  export PIP_CERT=/etc/ssl/certs/ca-certificates.crt
+fi
 work="$(mktemp -d)"; trap 'rm -rf "$work"' EXIT
 python3 -m venv "$work/venv"
 "$work/venv/bin/pip" install -q --disable-pip-version-check "onnx>=1.14" "onnxsim>=0.4" numpy

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -25,6 +26,17 @@ std::vector<PlateReport> Drive(PlateTracker& tracker, const std::vector<int>& ce
     t += kFrameS;
   }
   return all;
+}
+
+// Feeds one box per frame at (centre x, reading) with confidence 0.5; returns every report.
+std::vector<PlateReport> DriveReading(PlateTracker& tracker, const std::vector<std::pair<int, std::string>>& frames) {
+  std::vector<PlateReport> reports;
+  double t = 0.0;
+  for (const auto& [x, text] : frames) {
+    for (const auto& r : tracker.Update({At(x, text, 0.5)}, t)) reports.push_back(r);
+    t += kFrameS;
+  }
+  return reports;
 }
 
 std::vector<int> Steps(int from, int to, int step) {
@@ -69,12 +81,7 @@ TEST(PlateTracker, TheMajorityOfConfidenceWeightedVotesWins) {
   PlateTracker tracker({});
   const std::vector<std::pair<int, std::string>> frames = {
       {500, "214"}, {460, "274"}, {420, "214"}, {380, "214"}, {340, "274"}, {300, "214"}};
-  std::vector<PlateReport> reports;
-  double t = 0.0;
-  for (const auto& [x, text] : frames) {
-    for (const auto& r : tracker.Update({At(x, text, 0.5)}, t)) reports.push_back(r);
-    t += kFrameS;
-  }
+  const std::vector<PlateReport> reports = DriveReading(tracker, frames);
   ASSERT_EQ(reports.size(), 1u);
   EXPECT_EQ(reports[0].text, "214");
   EXPECT_NEAR(reports[0].vote_share, 4.0 / 6.0, 1e-9);
@@ -86,12 +93,7 @@ TEST(PlateTracker, SpellingsOfOneRoomVoteTogetherAndTheCommonestSpellingIsReport
   // E14-295 in three spellings (4 frames) against a look-alike E14-296 (2 frames, more than any spelling).
   const std::vector<std::pair<int, std::string>> frames = {
       {500, "E14296"}, {460, "E14-295"}, {420, "E14295"}, {380, "E14-296"}, {340, "E14-295"}, {300, "E14:295"}};
-  std::vector<PlateReport> reports;
-  double t = 0.0;
-  for (const auto& [x, text] : frames) {
-    for (const auto& r : tracker.Update({At(x, text, 0.5)}, t)) reports.push_back(r);
-    t += kFrameS;
-  }
+  const std::vector<PlateReport> reports = DriveReading(tracker, frames);
   ASSERT_EQ(reports.size(), 1u);
   EXPECT_EQ(reports[0].text, "E14-295");
   EXPECT_NEAR(reports[0].vote_share, 4.0 / 6.0, 1e-9);
