@@ -42,14 +42,17 @@ stop_launch() {
 trap stop_launch EXIT
 
 # topic_value TOPIC: the latest value of a latched std_msgs/String topic ("" if none yet).
-topic_value() { timeout -k 1 5 rostopic echo -n 1 -p "$1" 2>/dev/null | tail -n 1 | cut -d, -f2- || true; }
+# (10 s: rostopic is a Python program and starts slowly on a loaded machine.)
+topic_value() { timeout -k 1 10 rostopic echo -n 1 -p "$1" 2>/dev/null | tail -n 1 | cut -d, -f2- || true; }
 
-# wait_for TOPIC PATTERN WHAT LOG: polls the topic until its value matches the extended regex PATTERN.
+# wait_for TOPIC PATTERN WHAT LOG: polls the topic until its value matches the extended regex PATTERN;
+# the matching value is left in $matched (read once: a second read may time out on a loaded machine).
+matched=""
 wait_for() {
   local topic="$1" pattern="$2" what="$3" log="$4" deadline=$((SECONDS + timeout_s)) value=""
   while [ $SECONDS -lt $deadline ]; do
     value=$(topic_value "$topic")
-    if [[ "$value" =~ $pattern ]]; then echo "   $topic: $value"; return 0; fi
+    if [[ "$value" =~ $pattern ]]; then echo "   $topic: $value"; matched="$value"; return 0; fi
     kill -0 "$launch_pid" 2>/dev/null || { echo "roslaunch exited early:"; tail -n 30 "$log"; exit 1; }
     sleep 1
   done
@@ -75,7 +78,7 @@ wait_for /amcl/state '^converged' "global localization" "$out/localization.log"
 rosservice call /corridor_follower/enable false > /dev/null
 rostopic pub -1 /go_to_room std_msgs/String "data: '$room'" > /dev/null
 wait_for /go_to_room/status '^(arrived|refused|failed)' "reaching room $room" "$out/localization.log"
-status=$(topic_value /go_to_room/status)
+status="$matched"
 sleep 2  # let the recorder write the last messages
 stop_launch; trap - EXIT
 [[ "$status" == arrived* ]] || { echo "go to room $room: $status"; exit 1; }
