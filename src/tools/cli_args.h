@@ -70,6 +70,19 @@ inline std::string TakeValue(int argc, char** argv, int* i) {
   return argv[++*i];
 }
 
+// The option loop of a tool whose options all take a value: for each "--name value" pair calls
+// fn(option, value); --help / -h prints `usage` and exits 0; a last option without its value throws
+// UsageError. `fn` throws UsageError for an option it does not know.
+template <typename OptionFn>
+void ForEachOptionValue(int argc, char** argv, const char* usage, OptionFn fn) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string option = argv[i];
+    ExitIfHelp(option, usage);
+    const std::string value = TakeValue(argc, argv, &i);
+    fn(option, value);
+  }
+}
+
 // --set NAME=VALUE: calls set(NAME, VALUE as a number). Throws UsageError for a missing '=', a value that
 // is not a number ("--set NAME: ..."), or a name `set` rejects with std::invalid_argument ("--set: ...").
 template <typename SetFn>

@@ -38,10 +38,7 @@ using tools::UsageError;
 
 Args ParseArgs(int argc, char** argv) {
   Args args;
-  for (int i = 1; i < argc; ++i) {
-    const std::string option = argv[i];
-    tools::ExitIfHelp(option, kUsage);
-    const std::string value = tools::TakeValue(argc, argv, &i);
+  tools::ForEachOptionValue(argc, argv, kUsage, [&](const std::string& option, const std::string& value) {
     if (option == "--crops") args.crops = value;
     else if (option == "--out") args.out = value;
     else if (option == "--name") args.world.name = value;
@@ -51,7 +48,7 @@ Args ParseArgs(int argc, char** argv) {
     else if (option == "--corridor-width") args.world.corridor_width_m = tools::ParsePositiveNumber(option, value);
     else if (option == "--plate-height") args.world.plate_center_height_m = tools::ParsePositiveNumber(option, value);
     else throw UsageError("unknown option '" + option + "'");
-  }
+  });
   if (args.crops.empty()) throw UsageError("--crops is required");
   if (args.out.empty()) throw UsageError("--out is required");
   return args;

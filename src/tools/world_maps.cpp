@@ -34,16 +34,13 @@ using tools::UsageError;
 
 Args ParseArgs(int argc, char** argv) {
   Args args;
-  for (int i = 1; i < argc; ++i) {
-    const std::string option = argv[i];
-    tools::ExitIfHelp(option, kUsage);
-    const std::string value = tools::TakeValue(argc, argv, &i);
+  tools::ForEachOptionValue(argc, argv, kUsage, [&](const std::string& option, const std::string& value) {
     if (option == "--world") args.world = value;
     else if (option == "--out") args.out = value;
     else if (option == "--resolution") args.resolution_m = tools::ParsePositiveNumber(option, value);
     else if (option == "--laser-height") args.laser_height_m = tools::ParsePositiveNumber(option, value);
     else throw UsageError("unknown option '" + option + "'");
-  }
+  });
   if (args.world.empty()) throw UsageError("--world is required");
   if (args.out.empty()) throw UsageError("--out is required");
   return args;
