@@ -116,12 +116,7 @@ std::vector<TextRegion> TextExtractor::DetectRegions(const cv::Mat& grey) const 
 std::vector<PlateObservation> TextExtractor::ReadRegions(const cv::Mat& image, const cv::Mat& grey,
                                                          const std::vector<TextRegion>& regions,
                                                          const std::vector<bool>& read) {
-  // The recogniser gets the colour crop when there is one (the learned one reads colour; Tesseract's
-  // preprocessing converts it to grey itself).
-  const cv::Mat& source = options_.recognizer_type == TextRecognizerType::kPpOcr ? image : grey;
-  const double min_confidence = options_.recognizer_type == TextRecognizerType::kPpOcr
-                                    ? options_.ppocr.min_confidence
-                                    : options_.ocr.min_confidence;
+  const cv::Mat& source = ocr_->reads_colour() ? image : grey;
   std::vector<PlateObservation> observations;
   for (size_t i = 0; i < regions.size(); ++i) {
     PlateObservation observation;
@@ -131,7 +126,7 @@ std::vector<PlateObservation> TextExtractor::ReadRegions(const cv::Mat& image, c
       const OcrReading reading = ocr_->Read(source(observation.box_px));
       observation.raw_text = reading.text;
       observation.raw_confidence = reading.confidence;
-      if (reading.confidence >= min_confidence) {
+      if (reading.confidence >= ocr_->min_confidence()) {
         if (const auto text = validator_.Validate(reading.text)) {
           observation.text = *text;
           observation.confidence = reading.confidence;

@@ -87,5 +87,13 @@ TEST(ResolveTessdataDir, PrefersTheOptionThenTessdataPrefixThenDebiansFolder) {
   }
 }
 
+TEST(TesseractOcr, ItsMinimumConfidenceComesFromItsOptionsAndItReadsGrey) {
+  TesseractOcrOptions options;
+  options.min_confidence = 0.25;
+  const TesseractOcr ocr(options);
+  EXPECT_EQ(ocr.min_confidence(), 0.25);
+  EXPECT_FALSE(ocr.reads_colour());
+}
+
 }  // namespace
 }  // namespace doorplate_localization

@@ -90,14 +90,17 @@ TEST(TextExtractor, SendsAtMostMaxRegionsPerFrameBoxesToTheOcr) {
   EXPECT_EQ(extractor.last_observations().size(), 2u);
 }
 
-// Answers a fixed reading: lets the tests set the recogniser's confidence.
+// Answers a fixed reading with a fixed minimum confidence: lets the tests set the recogniser's confidence.
 class FixedOcr : public OcrEngine {
  public:
-  explicit FixedOcr(OcrReading reading) : reading_(std::move(reading)) {}
+  FixedOcr(OcrReading reading, double min_confidence)
+      : reading_(std::move(reading)), min_confidence_(min_confidence) {}
   OcrReading Read(const cv::Mat&) override { return reading_; }
+  double min_confidence() const override { return min_confidence_; }
 
  private:
   OcrReading reading_;
+  double min_confidence_;
 };
 
 TEST(TextExtractor, ReadFrameReadsAStillImageWithoutTouchingTheTracker) {
@@ -113,15 +116,14 @@ TEST(TextExtractor, ReadFrameReadsAStillImageWithoutTouchingTheTracker) {
 
 TEST(TextExtractor, ReadingsBelowTheRecognisersMinimumConfidenceAreNotValidated) {
   TextExtractorOptions options;
-  options.ocr.min_confidence = 0.5;
   TextExtractor unsure(options, std::make_unique<MserBandDetector>(options.detector),
-                       std::make_unique<FixedOcr>(OcrReading{"214", 0.4}));
+                       std::make_unique<FixedOcr>(OcrReading{"214", 0.4}, 0.5));
   const std::vector<PlateObservation> low = unsure.ReadFrame(Frame(400, 6));
   ASSERT_EQ(low.size(), 1u);
   EXPECT_EQ(low[0].raw_text, "214");  // kept for diagnostics
   EXPECT_EQ(low[0].text, "");
   TextExtractor sure(options, std::make_unique<MserBandDetector>(options.detector),
-                     std::make_unique<FixedOcr>(OcrReading{"214", 0.6}));
+                     std::make_unique<FixedOcr>(OcrReading{"214", 0.6}, 0.5));
   EXPECT_EQ(sure.ReadFrame(Frame(400, 6)).at(0).text, "214");
 }
 

@@ -51,6 +51,8 @@ class PpOcrRecognizer : public OcrEngine {
   // {"", 0} when nothing allowed was read. Throws std::invalid_argument for an empty crop or a type
   // other than CV_8UC1 / CV_8UC3.
   OcrReading Read(const cv::Mat& crop) override;
+  double min_confidence() const override { return options_.min_confidence; }
+  bool reads_colour() const override { return true; }
 
   const PpOcrRecognizerOptions& options() const { return options_; }
 

@@ -50,6 +50,7 @@ class TesseractOcr : public OcrEngine {
   // Binarizes the crop (PrepareCropForOcr) and reads it. confidence = Tesseract's mean text
   // confidence / 100. An unreadable crop gives {"", 0}.
   OcrReading Read(const cv::Mat& crop) override;
+  double min_confidence() const override { return options_.min_confidence; }
 
   // Reads an already binarized image (dark text on white), skipping the preprocessing.
   OcrReading ReadBinary(const cv::Mat& binary);
