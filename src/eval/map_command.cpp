@@ -25,8 +25,11 @@ std::vector<OptionSpec> MapOptions() {
       {"seed", "1", "experiment seed (simulator and filter seeds are derived from it)"},
       {"particles", "30", "number of particles"},
       {"speed-mps", "0.4", "cruise speed of the robot, m/s"},
-      {"max-seconds", "1800", "simulated seconds after which an unfinished sweep ends the run"},
+      {"max-seconds", "1800", "simulated seconds after which an unfinished drive ends the run"},
+      {"drive", "auto", "sweep (one corridor: out and back), explore (a whole floor: FloorExplorer's passes) "
+                        "or auto (explore when the world lists more than one corridor)"},
       {"set", "", "SLAM options NAME=VALUE[,NAME=VALUE...] (names: rbpf_slam_options.h, text.<field>)"},
+      {"progress-s", "60", "a progress line on stderr every this many simulated seconds (0: none)"},
       {"json", "", "write the results as JSON to this file"},
       {"out-dir", "", "write map.pgm/.yaml, text_map.yaml and map.png into this folder"},
   };
@@ -76,6 +79,30 @@ void PrintSummary(const MapEvalResult& r, MapMethod method, std::uint64_t seed) 
   }
 }
 
+void PrintDrive(const MapEvalResult& r, MapDrive drive) {
+  if (r.plate_fit.ok) {
+    std::printf("  plates after the best rigid fit of the map (%d pairs): RMSE %.3f m, max %.3f m\n", r.plate_fit.pairs,
+                r.plates_fitted.rmse_m, r.plates_fitted.max_error_m);
+  }
+  for (const CorridorAccuracy& c : r.corridors) {
+    if (!c.ok) {
+      std::printf("  corridor %s: not measured (a ray found no wall, or no cross-section)\n", c.id.c_str());
+      continue;
+    }
+    std::printf("  corridor %s: length %.3f m (true %.3f) %.2f %%, width %.3f m (true %.3f) %.2f %%\n", c.id.c_str(),
+                c.mapped.length_m, c.truth.length_m, 100.0 * c.length_accuracy, c.mapped.width_m, c.truth.width_m,
+                100.0 * c.width_accuracy);
+  }
+  if (drive != MapDrive::kExplore) return;
+  std::printf("  explore: %.1f m driven, %zu pass(es) ended:", r.distance_m, r.pass_ends.size());
+  for (std::size_t i = 0; i < r.pass_ends.size(); ++i) {
+    std::printf(" %s at scan %d", r.pass_ends[i].c_str(), r.pass_end_scans[i]);
+    if (i < r.pass_end_errors_m.size()) std::printf(" (trajectory error there %.3f m)", r.pass_end_errors_m[i]);
+    std::printf(i + 1 < r.pass_ends.size() ? ";" : "");
+  }
+  std::printf("\n");
+}
+
 }  // namespace
 
 int RunMapCommand(const std::vector<std::string>& args, const std::string& command_line) {
@@ -105,6 +132,9 @@ int RunMapCommand(const std::vector<std::string>& args, const std::string& comma
   options.max_time_s = parsed.Number("max-seconds");
   if (!(options.max_time_s > 0)) throw UsageError("map: --max-seconds must be > 0");
   ApplySets(parsed.String("set"), &options.slam);
+  options.progress_every_s = parsed.Number("progress-s");
+  if (!(options.progress_every_s >= 0)) throw UsageError("map: --progress-s must be >= 0");
+  const std::string drive = parsed.String("drive");
   const std::string json_path = parsed.String("json");
   if (!json_path.empty()) {
     const std::filesystem::path parent = std::filesystem::path(json_path).parent_path();
@@ -114,8 +144,15 @@ int RunMapCommand(const std::vector<std::string>& args, const std::string& comma
   }
   const std::string world_path = parsed.String("world");
   const World world = LoadWorldFile(world_path);
+  try {
+    options.drive = drive == "auto" ? (world.corridors.size() > 1 ? MapDrive::kExplore : MapDrive::kSweep)
+                                    : ParseMapDrive(drive);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("map: --drive: ") + e.what() + " (or auto)");
+  }
   const MapEvalResult result = RunMapEval(world, options);
   PrintSummary(result, options.method, options.seed);
+  PrintDrive(result, options.drive);
   const std::string out_dir = parsed.String("out-dir");
   if (!out_dir.empty()) {
     World built = world;
@@ -127,7 +164,7 @@ int RunMapCommand(const std::vector<std::string>& args, const std::string& comma
     if (!out) throw std::runtime_error("cannot write " + json_path);
     JsonWriter json(&out);
     WriteMapEvalJson(result, {world_path, command_line, options.method, options.seed,
-                              options.slam.slam.num_particles}, &json);
+                              options.slam.slam.num_particles, options.drive}, &json);
     out << "\n";
     if (!out) throw std::runtime_error("error writing " + json_path);
   }

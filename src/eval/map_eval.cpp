@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <memory>
 #include <stdexcept>
@@ -38,6 +39,13 @@ RangeScan ToRangeScan(const SimulatedScan& scan, const LaserOptions& laser) {
   return out;
 }
 
+// Records that a pass just ended (its reason and the processed scan it ended at).
+void NotePassEnd(const FloorExplorer& explorer, MapEvalResult* result) {
+  if (result->pass_ends.size() >= static_cast<std::size_t>(explorer.passes_ended())) return;  // noted
+  result->pass_ends.push_back(PassEndName(explorer.last_pass_end()));
+  result->pass_end_scans.push_back(std::max(0, result->scans_processed - 1));
+}
+
 }  // namespace
 
 const char* MapMethodName(MapMethod method) { return method == MapMethod::kRbpf ? "rbpf" : "rbpf_text"; }
@@ -46,6 +54,14 @@ MapMethod ParseMapMethod(const std::string& name) {
   if (name == "rbpf") return MapMethod::kRbpf;
   if (name == "rbpf_text") return MapMethod::kRbpfText;
   throw std::invalid_argument("map method '" + name + "' must be rbpf or rbpf_text");
+}
+
+const char* MapDriveName(MapDrive drive) { return drive == MapDrive::kSweep ? "sweep" : "explore"; }
+
+MapDrive ParseMapDrive(const std::string& name) {
+  if (name == "sweep") return MapDrive::kSweep;
+  if (name == "explore") return MapDrive::kExplore;
+  throw std::invalid_argument("drive '" + name + "' must be sweep or explore");
 }
 
 MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
@@ -65,11 +81,15 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
   CorridorSweepOptions sweep_options = options.sweep;
   sweep_options.follower.cruise_speed_mps = options.speed_mps;
   CorridorSweep sweep(sweep_options);
+  FloorExplorerOptions explore_options = options.explore;
+  explore_options.steering.cruise_speed_mps = options.speed_mps;
+  FloorExplorer explorer(explore_options);
+  const bool explore = options.drive == MapDrive::kExplore;
 
   const bool text = options.method == MapMethod::kRbpfText;
   std::unique_ptr<TextExtractor> extractor;
   double camera_yaw_rad = 0.0;
-  if (text) {
+  if (text || explore) {
     TextExtractorOptions extractor_options = options.extractor;
     extractor_options.tracker.fx_px = sim.camera().intrinsics().fx_px;
     extractor_options.tracker.cx_px = sim.camera().intrinsics().cx_px;
@@ -82,7 +102,17 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
   const double frame_period_s = 1.0 / sim_world.sensors.camera.rate_hz;
   int next_frame = 0;
   bool first = true;
+  double next_progress_s = options.progress_every_s;
   for (long long step = 0; sim.time_s() < options.max_time_s; ++step) {
+    if (options.progress_every_s > 0 && sim.time_s() >= next_progress_s) {
+      next_progress_s += options.progress_every_s;
+      const std::string phase = !explore ? SweepPhaseName(sweep.phase())
+                                : explorer.phase() == ExplorePhase::kFollow ? "pass " + std::to_string(explorer.pass())
+                                                                             : ExplorePhaseName(explorer.phase());
+      std::fprintf(stderr, "map: %.0f s simulated, %.1f m driven, %d plate reports, %d scans processed, %s\n",
+                   sim.time_s(), sim.distance_travelled_m(), result.plate_reports, result.scans_processed,
+                   phase.c_str());
+    }
     if (step % steps_per_scan == 0) {
       const SimulatedScan scan = sim.Scan();
       if (first) {
@@ -96,13 +126,28 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
       }
       result.slam_seconds += ThreadCpuSeconds() - t0;
       ++result.scans;
-      const VelocityCommand cmd = sweep.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, sim.odom_pose());
-      if (sweep.phase() == SweepPhase::kDone) break;
+      VelocityCommand cmd;
+      if (explore) {
+        cmd = explorer.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, sim.odom_pose());
+        NotePassEnd(explorer, &result);
+        if (explorer.phase() == ExplorePhase::kDone) break;
+      } else {
+        cmd = sweep.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, sim.odom_pose());
+        if (sweep.phase() == SweepPhase::kDone) break;
+      }
       sim.SetCommand(cmd.linear_mps, cmd.angular_rps);
     }
-    if (text && sim.time_s() + 1e-9 >= next_frame * frame_period_s) {
+    if (extractor && sim.time_s() + 1e-9 >= next_frame * frame_period_s) {
       ++next_frame;
       for (const PlateReport& report : extractor->Process(sim.CameraImage(), sim.time_s())) {
+        if (explore) {
+          explorer.OnPlateRead(report.text);
+          NotePassEnd(explorer, &result);
+        }
+        if (!text) {
+          ++result.plate_reports;  // read (the explorer used it), not given to the laser-only SLAM
+          continue;
+        }
         PlateSighting sighting;
         sighting.text = report.text;
         sighting.confidence = report.confidence;
@@ -116,7 +161,8 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
     }
     sim.Step();
   }
-  result.sweep_done = sweep.phase() == SweepPhase::kDone;
+  result.sweep_done = explore ? explorer.phase() == ExplorePhase::kDone : sweep.phase() == SweepPhase::kDone;
+  result.distance_m = sim.distance_travelled_m();
   result.sim_seconds = sim.time_s();
   result.degenerate_scans = slam.slam().stats().degenerate_scans;
 
@@ -134,6 +180,12 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
     result.trajectory_max_error_m = std::max(result.trajectory_max_error_m, e);
   }
   result.trajectory_rmse_m = n > 0 ? std::sqrt(sum2 / n) : 0.0;
+  for (const int scan : result.pass_end_scans) {
+    if (scan >= 0 && static_cast<std::size_t>(scan) < n) {
+      result.pass_end_errors_m.push_back(
+          Norm(result.trajectory[scan].Position() - result.true_trajectory[scan].Position()));
+    }
+  }
   if (const std::optional<SlamBackEndResult> back_end = slam.BackEndResult()) {
     result.odometry_scale = back_end->odometry_scale;
     result.loop_closures = back_end->loop_closures;
@@ -150,7 +202,11 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
   result.estimate = MeasureCorridor(result.grid);
   result.length_accuracy = ExtentAccuracy(result.estimate.length_m, result.truth.length_m);
   result.width_accuracy = ExtentAccuracy(result.estimate.width_m, result.truth.width_m);
-  result.plates = ScorePlates(result.text_map, GroundTruthTextMap(sim_world), result.world_from_map);
+  const TextMap true_plates = GroundTruthTextMap(sim_world);
+  result.plates = ScorePlates(result.text_map, true_plates, result.world_from_map);
+  result.plate_fit = AlignPlates(result.text_map, true_plates);
+  if (result.plate_fit.ok) result.plates_fitted = ScorePlates(result.text_map, true_plates, result.plate_fit.world_from_map);
+  result.corridors = CompareCorridorsWithWorld(result.grid, result.world_from_map, sim_world);
   result.peak_rss_kb = PeakRssKb();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -1,7 +1,8 @@
-// `doorplate_eval map` (paper Table II): one corridor sweep in the simulator (out along one wall, turn,
-// back along the other; CorridorSweep), every laser scan fed to the SLAM with the odometry pose, and for
-// method rbpf_text every rendered camera frame through the real text extractor, its reports fed to
-// TextSlam::AddPlate. The result is measured on the output maps (map_measure.h). ROS-free, in-process,
+// `doorplate_eval map` (paper Table II): one drive in the simulator, every laser scan fed to the SLAM with
+// the odometry pose, and for method rbpf_text every rendered camera frame through the real text
+// extractor, its reports fed to TextSlam::AddPlate. The drive is a corridor sweep (out along one wall,
+// turn, back along the other; CorridorSweep) or, for a whole floor, FloorExplorer's passes (issue 17),
+// which end on re-read plates: the extractor then runs for both methods, so both drive the same way. The result is measured on the output maps (map_measure.h). ROS-free, in-process,
 // deterministic for a seed.
 #pragma once
 
@@ -9,12 +10,15 @@
 #include <string>
 
 #include "doorplate_localization/behaviour/corridor_sweep.h"
+#include "doorplate_localization/behaviour/floor_explorer.h"
 #include "doorplate_localization/maps/occupancy_grid.h"
 #include "doorplate_localization/maps/text_map.h"
 #include "doorplate_localization/sim/world.h"
 #include "doorplate_localization/slam/text_slam.h"
 #include "doorplate_localization/text/text_extractor.h"
+#include "floor_measure.h"
 #include "map_measure.h"
+#include "plate_alignment.h"
 
 namespace doorplate_localization {
 
@@ -22,6 +26,11 @@ enum class MapMethod { kRbpf, kRbpfText };
 // "rbpf" / "rbpf_text"; ParseMapMethod throws std::invalid_argument for anything else.
 const char* MapMethodName(MapMethod method);
 MapMethod ParseMapMethod(const std::string& name);
+
+enum class MapDrive { kSweep, kExplore };
+// "sweep" / "explore"; ParseMapDrive throws std::invalid_argument for anything else.
+const char* MapDriveName(MapDrive drive);
+MapDrive ParseMapDrive(const std::string& name);
 
 struct MapEvalOptions {
   MapMethod method = MapMethod::kRbpfText;
@@ -32,12 +41,21 @@ struct MapEvalOptions {
   // RbpfSlamOptions' defaults and rbpf_text from TextSlamOptions' (DefaultTextSlamLaserOptions).
   TextSlamOptions slam;
   TextExtractorOptions extractor;    // fx/cx are set from the simulated camera
-  CorridorSweepOptions sweep;
+  double progress_every_s = 0.0;     // > 0: a progress line on stderr every this many simulated seconds
+  MapDrive drive = MapDrive::kSweep;
+  CorridorSweepOptions sweep;        // drive kSweep (cruise speed from speed_mps)
+  FloorExplorerOptions explore;      // drive kExplore (cruise speed from speed_mps)
 };
 
 struct MapEvalResult {
   std::string world_name;
-  bool sweep_done = false;
+  bool sweep_done = false;           // the drive ended by itself (sweep: done; explore: every pass ended)
+  std::vector<int> pass_end_scans;   // explore: processed-scan index at which each pass ended
+  std::vector<std::string> pass_ends;  // explore: why each pass ended (PassEndName)
+  // explore: position error of the mapped trajectory at each pass end (the start aligned): where a
+  // pass closes its loop, this is the loop's closing error.
+  std::vector<double> pass_end_errors_m;
+  double distance_m = 0.0;           // driven (true path length)
   double sim_seconds = 0.0;          // simulated duration of the sweep
   double seconds = 0.0;              // wall clock of the whole run (simulation, rendering, OCR, SLAM)
   double slam_seconds = 0.0;         // thread CPU time inside the SLAM calls (AddScan + AddPlate)
@@ -52,7 +70,10 @@ struct MapEvalResult {
   double width_accuracy = 0.0;
   int plate_reports = 0;             // extractor reports fed to AddPlate
   int plate_reports_used = 0;
-  PlateScore plates;
+  PlateScore plates;                 // under the start-pose alignment (world_from_map)
+  PlateAlignment plate_fit;          // the best rigid fit of the mapped plates onto the true ones
+  PlateScore plates_fitted;          // the plates scored under plate_fit.world_from_map (if ok)
+  std::vector<CorridorAccuracy> corridors;  // per corridor of the world's `corridors` (start-pose alignment)
   Pose2D world_from_map;             // the map frame in the world: the start pose, odometry at the first scan
   double final_position_error_m = 0.0;  // final estimate (back end, else best particle) vs the truth
   double trajectory_rmse_m = 0.0;    // position error of `trajectory` against the truth, per processed scan

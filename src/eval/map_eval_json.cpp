@@ -8,7 +8,14 @@ void WriteMapEvalJson(const MapEvalResult& r, const MapEvalRunInfo& info, JsonWr
   j.Field("experiment", "map").Field("command_line", info.command_line).Field("world", r.world_name);
   j.Field("world_path", info.world_path).Field("method", MapMethodName(info.method)).Field("seed", info.seed);
   j.Field("particles", info.particles);
-  j.Field("sweep_done", r.sweep_done);
+  j.Field("drive", MapDriveName(info.drive)).Field("sweep_done", r.sweep_done).Field("distance_m", r.distance_m);
+  j.Key("pass_ends").BeginArray();
+  for (std::size_t i = 0; i < r.pass_ends.size(); ++i) {
+    j.BeginObject().Field("why", r.pass_ends[i]).Field("scan", r.pass_end_scans[i]);
+    if (i < r.pass_end_errors_m.size()) j.Field("trajectory_error_m", r.pass_end_errors_m[i]);
+    j.EndObject();
+  }
+  j.EndArray();
   j.Field("length_true_m", r.truth.length_m).Field("length_est_m", r.estimate.length_m);
   j.Field("length_accuracy", r.length_accuracy);
   j.Field("width_true_m", r.truth.width_m).Field("width_est_m", r.estimate.width_m);
@@ -21,6 +28,19 @@ void WriteMapEvalJson(const MapEvalResult& r, const MapEvalRunInfo& info, JsonWr
   } else {
     j.Key("plate_position_rmse_m").Null().Key("plate_max_error_m").Null();
   }
+  if (r.plate_fit.ok) {
+    j.Field("plates_fitted_rmse_m", r.plates_fitted.rmse_m).Field("plates_fitted_max_error_m", r.plates_fitted.max_error_m);
+  }
+  j.Key("corridors").BeginArray();
+  for (const CorridorAccuracy& c : r.corridors) {
+    j.BeginObject().Field("id", c.id).Field("ok", c.ok);
+    j.Field("length_true_m", c.truth.length_m).Field("length_est_m", c.mapped.length_m);
+    j.Field("length_accuracy", c.length_accuracy);
+    j.Field("width_true_m", c.truth.width_m).Field("width_est_m", c.mapped.width_m);
+    j.Field("width_accuracy", c.width_accuracy).Field("cross_sections_used", c.mapped.cross_sections_used);
+    j.EndObject();
+  }
+  j.EndArray();
   j.Field("plate_reports", r.plate_reports).Field("plate_reports_used", r.plate_reports_used);
   j.Field("final_position_error_m", r.final_position_error_m);
   j.Field("trajectory_rmse_m", r.trajectory_rmse_m).Field("trajectory_max_error_m", r.trajectory_max_error_m);

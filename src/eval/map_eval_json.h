@@ -15,6 +15,7 @@ struct MapEvalRunInfo {
   MapMethod method = MapMethod::kRbpfText;
   std::uint64_t seed = 1;
   int particles = 0;
+  MapDrive drive = MapDrive::kSweep;
 };
 
 // One object: length_true_m, length_est_m, length_accuracy, width_true_m, width_est_m, width_accuracy,

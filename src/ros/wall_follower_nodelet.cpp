@@ -1,9 +1,12 @@
 // WallFollowerNodelet: corridor following with the laser (paper Sec. 3.2-3.4) as a thin nodelet over
-// WallFollower (~mode follow) or CorridorSweep (~mode sweep / patrol, which also need tf odom→base_link to
-// measure the turn). Subscribes scan (sensor_msgs/LaserScan, any frame with a tf to base_link); publishes
-// cmd_vel (geometry_msgs/Twist), ~state (std_msgs/String, latched: follow mode following | no_wall |
-// end_reached; sweep modes follow_out | turn_around | follow_back | done; any mode disabled |
-// no_valid_scan) and ~corridor_width (std_msgs/Float32, metres, when both walls are seen).
+// WallFollower (~mode follow), CorridorSweep (~mode sweep / patrol) or FloorExplorer (~mode explore: a
+// whole floor); sweep, patrol and explore also need tf odom→base_link to measure turns and distance.
+// Subscribes scan (sensor_msgs/LaserScan, any frame with a tf to base_link) and, in explore mode,
+// text_detections (TextDetectionArray: its plate reports end the passes); publishes cmd_vel
+// (geometry_msgs/Twist), ~state (std_msgs/String, latched: follow mode following | no_wall |
+// end_reached; sweep modes follow_out | turn_around | follow_back | done; explore pass_<n> |
+// turn_around | done; any mode disabled | no_valid_scan) and ~corridor_width (std_msgs/Float32, metres,
+// when both walls are seen; follow and sweep modes).
 // Service ~enable (std_srvs/SetBool) starts and stops driving. Parameters: wall_follower_options.h.
 #include <mutex>
 
@@ -19,7 +22,9 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
+#include "doorplate_localization/TextDetectionArray.h"
 #include "doorplate_localization/ros/scan_conversions.h"
+#include "doorplate_localization/ros/text_detection_conversions.h"
 #include "wall_follower_options.h"
 
 namespace doorplate_localization {
@@ -32,7 +37,10 @@ class WallFollowerNodelet : public nodelet::Nodelet {
     try {
       options_ = LoadWallFollowerOptions(pnh);
       follower_ = std::make_unique<WallFollower>(options_.follower);
-      if (options_.mode != CorridorDriveMode::kFollow) sweep_ = std::make_unique<CorridorSweep>(options_.sweep);
+      if (options_.mode == CorridorDriveMode::kSweep || options_.mode == CorridorDriveMode::kPatrol) {
+        sweep_ = std::make_unique<CorridorSweep>(options_.sweep);
+      }
+      if (options_.mode == CorridorDriveMode::kExplore) explorer_ = std::make_unique<FloorExplorer>(options_.explore);
     } catch (const std::exception& e) {
       NODELET_FATAL("%s", e.what());
       throw;
@@ -44,6 +52,7 @@ class WallFollowerNodelet : public nodelet::Nodelet {
     width_pub_ = pnh.advertise<std_msgs::Float32>("corridor_width", 1);
     enable_srv_ = pnh.advertiseService("enable", &WallFollowerNodelet::OnEnable, this);
     scan_sub_ = nh.subscribe("scan", 1, &WallFollowerNodelet::OnScan, this);
+    if (explorer_) detections_sub_ = nh.subscribe("text_detections", 10, &WallFollowerNodelet::OnDetections, this);
     watchdog_ = nh.createTimer(ros::Duration(options_.scan_timeout_s), &WallFollowerNodelet::OnWatchdog, this);
     PublishState(enabled_ ? "waiting_for_scan" : "disabled");
   }
@@ -55,6 +64,16 @@ class WallFollowerNodelet : public nodelet::Nodelet {
     res.success = true;
     res.message = enabled_ ? "driving" : "stopped";
     return true;
+  }
+
+  void OnDetections(const TextDetectionArray::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const int ended = explorer_->passes_ended();
+    for (const std::string& text : CrossedPlateTexts(*msg)) explorer_->OnPlateRead(text);
+    if (explorer_->passes_ended() != ended) {
+      NODELET_INFO("floor exploration: pass %d ended (%s) after %.1f m; %d plates known", explorer_->pass(),
+                   PassEndName(explorer_->last_pass_end()), explorer_->pass_distance_m(), explorer_->plates_known());
+    }
   }
 
   void OnScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
@@ -72,7 +91,7 @@ class WallFollowerNodelet : public nodelet::Nodelet {
         problem = std::string("no tf from ") + scan->header.frame_id + " to " + options_.base_frame_id + ": " + e.what();
       }
     }
-    if (problem.empty() && sweep_) {
+    if (problem.empty() && (sweep_ || explorer_)) {
       try {
         // The latest odometry, not the one at the scan's stamp: the turn is measured by the yaw change, which
         // a few tens of milliseconds of latency do not disturb, while waiting for the stamp can time out.
@@ -93,7 +112,11 @@ class WallFollowerNodelet : public nodelet::Nodelet {
     CorridorObservation obs;
     VelocityCommand cmd;
     std::string state;
-    if (sweep_) {
+    if (explorer_) {
+      cmd = explorer_->Step(scan->ranges, scan->angle_min + yaw_in_base, scan->angle_increment, odom_pose);
+      state = explorer_->phase() == ExplorePhase::kFollow ? "pass_" + std::to_string(explorer_->pass())
+                                                          : ExplorePhaseName(explorer_->phase());
+    } else if (sweep_) {
       if (sweep_->phase() == SweepPhase::kDone && options_.mode == CorridorDriveMode::kPatrol) sweep_->Reset();
       cmd = sweep_->Step(scan->ranges, scan->angle_min + yaw_in_base, scan->angle_increment, odom_pose);
       obs = sweep_->last_observation();
@@ -145,10 +168,11 @@ class WallFollowerNodelet : public nodelet::Nodelet {
   WallFollowerNodeOptions options_;
   std::unique_ptr<WallFollower> follower_;
   std::unique_ptr<CorridorSweep> sweep_;  // sweep and patrol modes
+  std::unique_ptr<FloorExplorer> explorer_;  // explore mode
   tf2_ros::Buffer tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   ros::Publisher cmd_pub_, state_pub_, width_pub_;
-  ros::Subscriber scan_sub_;
+  ros::Subscriber scan_sub_, detections_sub_;
   ros::ServiceServer enable_srv_;
   ros::Timer watchdog_;
   std::mutex mutex_;

@@ -33,12 +33,28 @@ WallFollowerNodeOptions LoadWallFollowerOptions(const ros::NodeHandle& nh) {
                f.side_max_range_m);
   f.front_half_width_m = ReadPositive(nh, "front_half_width_m", f.front_half_width_m);
   const std::string mode = ReadParam(nh, "mode", std::string("follow"));
-  RequireParam(mode == "follow" || mode == "sweep" || mode == "patrol", nh, "mode", "follow, sweep or patrol", mode);
-  o.mode = mode == "follow" ? CorridorDriveMode::kFollow
+  RequireParam(mode == "follow" || mode == "sweep" || mode == "patrol" || mode == "explore", nh, "mode",
+               "follow, sweep, patrol or explore", mode);
+  o.mode = mode == "follow"  ? CorridorDriveMode::kFollow
            : mode == "sweep" ? CorridorDriveMode::kSweep
-                             : CorridorDriveMode::kPatrol;
+           : mode == "patrol" ? CorridorDriveMode::kPatrol
+                              : CorridorDriveMode::kExplore;
   o.sweep.follower = f;
   o.sweep.turn_speed_rps = ReadPositive(nh, "turn_speed_rps", o.sweep.turn_speed_rps);
+  FloorExplorerOptions& e = o.explore;
+  e.steering.wall_side = f.wall_side;
+  e.steering.wall_distance_m = f.wall_distance_m;
+  e.steering.cruise_speed_mps = f.cruise_speed_mps;
+  e.steering.max_angular_speed_rps = f.max_angular_speed_rps;
+  e.turn_speed_rps = o.sweep.turn_speed_rps;
+  e.passes = ReadParam(nh, "explore/passes", e.passes);
+  RequireParam(e.passes >= 1, nh, "explore/passes", ">= 1", e.passes);
+  e.revisit_plates = ReadParam(nh, "explore/revisit_plates", e.revisit_plates);
+  RequireParam(e.revisit_plates >= 1, nh, "explore/revisit_plates", ">= 1", e.revisit_plates);
+  e.min_revisit_travel_m = ReadPositive(nh, "explore/min_revisit_travel_m", e.min_revisit_travel_m);
+  e.max_pass_distance_m = ReadPositive(nh, "explore/max_pass_distance_m", e.max_pass_distance_m);
+  RequireParam(e.max_pass_distance_m > e.min_revisit_travel_m, nh, "explore/max_pass_distance_m",
+               "> explore/min_revisit_travel_m", e.max_pass_distance_m);
   o.base_frame_id = ReadFrameParam(nh, "base_frame_id", o.base_frame_id);
   o.odom_frame_id = ReadFrameParam(nh, "odom_frame_id", o.odom_frame_id);
   o.scan_timeout_s = ReadPositive(nh, "scan_timeout_s", o.scan_timeout_s);

@@ -72,6 +72,23 @@ void ParseLightZone(const YamlField& f, World* world) {
   world->lighting.push_back(zone);
 }
 
+// `corridors[]`: ground-truth centrelines and widths; ids unique, from != to, width > 0 (finite: AsDouble).
+void ParseCorridor(const YamlField& f, World* world) {
+  f.RequireOnlyKeys({"id", "from", "to", "width_m"});
+  CorridorSpec corridor;
+  corridor.id = f.Child("id").AsString();
+  if (corridor.id.empty()) f.Child("id").Fail("must not be empty");
+  for (const CorridorSpec& other : world->corridors) {
+    if (other.id == corridor.id) f.Child("id").Fail("duplicate corridor id '" + corridor.id + "'");
+  }
+  const auto a = f.Child("from").AsDoubles(2), b = f.Child("to").AsDoubles(2);
+  corridor.centreline = {{a[0], a[1]}, {b[0], b[1]}};
+  if (corridor.centreline.Length() < 1e-3) f.Child("to").Fail("must be at least 1 mm from 'from'");
+  corridor.width_m = f.Child("width_m").AsDouble();
+  if (!(corridor.width_m > 0.0)) f.Child("width_m").Fail("must be > 0, got " + std::to_string(corridor.width_m));
+  world->corridors.push_back(corridor);
+}
+
 void ParseWall(const YamlField& f, World* world, Indexes* idx) {
   f.RequireOnlyKeys({"id", "from", "to", "corridor_side", "color"});
   Wall wall;
@@ -262,7 +279,7 @@ World ParseWorldYaml(const std::string& yaml_text, const std::string& source_nam
     const YamlField root = YamlField::Parse(yaml_text, source_name);
     root.RequireOnlyKeys({"format_version", "name", "description", "wall_height_m", "floor_color", "ceiling_color",
                           "robot", "walls", "doors", "door_rows", "plates", "distractors", "sensors",
-                          "lighting"});
+                          "lighting", "corridors"});
     World world;
     world.source_file = source_name;
     world.format_version = root.Child("format_version").AsInt();
@@ -286,6 +303,7 @@ World ParseWorldYaml(const std::string& yaml_text, const std::string& source_nam
       for (const YamlField& f : root.Child("distractors").Items()) ParseSign(f, TextKind::kDistractor, &world, idx);
     }
     if (root.Has("lighting")) for (const YamlField& f : root.Child("lighting").Items()) ParseLightZone(f, &world);
+    if (root.Has("corridors")) for (const YamlField& f : root.Child("corridors").Items()) ParseCorridor(f, &world);
     ParseRobot(root.Child("robot"), &world);
     if (root.Has("sensors")) ParseSensorOptions(root.Child("sensors"), &world.sensors);
     BuildSurfaces(world);

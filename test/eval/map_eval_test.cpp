@@ -50,6 +50,61 @@ TEST(MapEval, LaserOnlyMethodMapsNoPlates) {
   EXPECT_GT(r.length_accuracy, 0.98);
 }
 
+// An L of two 2 m wide corridors (10 m along x, then 6 m north), plates on both walls of both legs, and
+// its `corridors` ground truth: a floor the sweep cannot cover.
+World TinyLFloor() {
+  World world;
+  world.name = "tiny_l";
+  const std::vector<Vec2> corners = {{0, 0}, {10, 0}, {10, 8}, {8, 8}, {8, 2}, {0, 2}};
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    world.walls.push_back({"w" + std::to_string(i), {corners[i], corners[(i + 1) % corners.size()]}, true,
+                           {200, 200, 200}});
+  }
+  const std::vector<std::pair<int, double>> places = {{0, 3.0}, {0, 6.5}, {4, 4.0}, {4, 6.5}, {1, 4.5}, {3, 2.5}};
+  for (std::size_t i = 0; i < places.size(); ++i) {
+    TextSign sign;
+    sign.text = std::to_string(301 + i);
+    sign.wall_index = places[i].first;
+    sign.offset_m = places[i].second;
+    world.signs.push_back(sign);
+  }
+  world.corridors = {{"leg_x", {{0, 1}, {10, 1}}, 2.0}, {"leg_y", {{9, 0}, {9, 8}}, 2.0}};
+  world.start_pose = {0.8, 0.6, 0.0};
+  world.sensors.camera.rate_hz = 15.0;
+  BuildSurfaces(world);
+  return world;
+}
+
+TEST(MapEval, ExploreDrivesBothLegsOfAnLReadsEveryPlateAndMeasuresEachCorridor) {
+  MapEvalOptions options = Options(MapMethod::kRbpfText);
+  options.drive = MapDrive::kExplore;
+  options.explore.passes = 1;
+  options.explore.min_revisit_travel_m = 10.0;
+  options.max_time_s = 300.0;
+  const MapEvalResult r = RunMapEval(TinyLFloor(), options);
+  EXPECT_TRUE(r.sweep_done);
+  ASSERT_EQ(r.pass_ends.size(), 1u);
+  EXPECT_NE(r.pass_ends[0], "max_distance");  // back at the start: by its pose or by its first plates
+  EXPECT_GT(r.distance_m, 25.0);  // both legs out and back
+  std::string mapped;
+  for (const TextLandmark& l : r.text_map.landmarks) mapped += l.text + " ";
+  EXPECT_EQ(r.plates.plates_mapped, 6) << "mapped: " << mapped << "; " << r.plate_reports << " reports";
+  EXPECT_LT(r.plates.max_error_m, 0.25);
+  ASSERT_EQ(r.corridors.size(), 2u);
+  for (const CorridorAccuracy& c : r.corridors) {
+    EXPECT_TRUE(c.ok) << c.id;
+    EXPECT_GT(c.length_accuracy, 0.97) << c.id;
+  }
+  ASSERT_EQ(r.pass_end_errors_m.size(), 1u);
+  EXPECT_LT(r.pass_end_errors_m[0], 0.3);
+}
+
+TEST(MapEval, DriveNamesRoundTripAndUnknownOnesAreRefused) {
+  EXPECT_EQ(ParseMapDrive(MapDriveName(MapDrive::kSweep)), MapDrive::kSweep);
+  EXPECT_EQ(ParseMapDrive(MapDriveName(MapDrive::kExplore)), MapDrive::kExplore);
+  EXPECT_THROW(ParseMapDrive("frontier"), std::invalid_argument);
+}
+
 TEST(MapEval, MethodNamesRoundTripAndUnknownOnesAreRefused) {
   EXPECT_EQ(ParseMapMethod(MapMethodName(MapMethod::kRbpf)), MapMethod::kRbpf);
   EXPECT_EQ(ParseMapMethod(MapMethodName(MapMethod::kRbpfText)), MapMethod::kRbpfText);

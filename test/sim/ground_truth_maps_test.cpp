@@ -105,6 +105,31 @@ TEST(RasterizeWorld, SlantedWallsAtAnyAngleStayClosed) {
   }
 }
 
+// Issue 17's whole floor is one closed, connected area: every corridor's centreline, the space in front of
+// every plate and every room behind an open door are reachable from the start; the courtyard is not.
+TEST(RasterizeWorld, TheHospitalFloorRingIsOneConnectedClosedFloor) {
+  const World world = LoadWorldFile(std::string(DOORPLATE_SOURCE_DIR) + "/worlds/hospital_floor_ring.yaml");
+  const OccupancyGrid grid = RasterizeWorld(world, 0.05, kLaserHeight);
+  for (const CorridorSpec& c : world.corridors) {
+    for (double t = 0.02; t <= 0.98; t += 0.02) {
+      const Vec2 p = c.centreline.a + t * (c.centreline.b - c.centreline.a);
+      EXPECT_EQ(CellAt(grid, p), OccupancyGrid::kFree) << c.id << " at " << p.x << ", " << p.y;
+    }
+  }
+  for (const TextSign* plate : world.Plates()) {
+    const Vec2 front = world.SignPosition(*plate) + 0.3 * world.CorridorNormal(plate->wall_index);
+    EXPECT_EQ(CellAt(grid, front), OccupancyGrid::kFree) << plate->text;
+  }
+  for (const Door& door : world.doors) {
+    if (!door.open) continue;
+    const Wall& wall = world.walls[door.wall_index];
+    const Vec2 at = wall.segment.a + (door.offset_m / wall.segment.Length()) * (wall.segment.b - wall.segment.a);
+    const Vec2 in_room = at + 1.5 * world.WallNormal(door.wall_index, !wall.corridor_side_left);
+    EXPECT_EQ(CellAt(grid, in_room), OccupancyGrid::kFree) << door.id;
+  }
+  EXPECT_EQ(CellAt(grid, {21.0, 13.0}), OccupancyGrid::kUnknown);  // the courtyard
+}
+
 TEST(RasterizeWorld, AnOpenWorldIsReportedAsNotClosed) {
   World world = test::RectangleCorridor(10.0, 2.0);
   world.walls.pop_back();  // no east wall

@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <set>
 #include <utility>
 
@@ -83,13 +85,84 @@ TEST(LoadWorldFile, SmallDimPlatesIsSmallLowContrastAndUnevenlyLit) {
 
 TEST(LoadWorldFile, ReadsEveryBuiltInWorld) {
   for (const char* name : {"paper_sim_closed_doors", "paper_sim_open_doors", "paper_real_corridor", "hospital_ward",
-                           "small_dim_plates"}) {
+                           "small_dim_plates", "hospital_floor_ring"}) {
     EXPECT_NO_THROW(LoadWorldFile(kWorlds + name + ".yaml")) << name;
   }
   const World open = LoadWorldFile(kWorlds + "paper_sim_open_doors.yaml");
   const World closed = LoadWorldFile(kWorlds + "paper_sim_closed_doors.yaml");
   EXPECT_EQ(open.Plates().size(), 10u);
   EXPECT_GT(open.surfaces.size(), closed.surfaces.size());  // rooms behind open doors
+}
+
+// Issue 17: a whole floor: ≥ 150 m of corridor, ≥ 60 unique 2xx plates on both walls of every corridor,
+// each facing its corridor, about one door in five open, a lift lobby with two plateless lift doors.
+TEST(LoadWorldFile, HospitalFloorRingHasPlatesFacingBothWallsOfEveryCorridor) {
+  const World world = LoadWorldFile(kWorlds + "hospital_floor_ring.yaml");
+  ASSERT_EQ(world.corridors.size(), 7u);
+  double total_m = 0.0;
+  for (const CorridorSpec& c : world.corridors) total_m += c.id == "lift_lobby" ? 0.0 : c.centreline.Length();
+  EXPECT_GE(total_m, 150.0);
+  const auto plates = world.Plates();
+  EXPECT_GE(plates.size(), 60u);
+  std::set<std::string> texts;
+  std::map<std::string, std::set<bool>> sides;  // corridor id -> sides of its centreline holding plates
+  for (const TextSign* plate : plates) {
+    SCOPED_TRACE(plate->text);
+    EXPECT_TRUE(texts.insert(plate->text).second);
+    EXPECT_EQ(plate->text.size(), 3u);
+    EXPECT_EQ(plate->text[0], '2');
+    // A point 0.3 m in front of the plate lies inside exactly one corridor's strip.
+    const Vec2 front = world.SignPosition(*plate) + 0.3 * world.CorridorNormal(plate->wall_index);
+    int inside = 0;
+    for (const CorridorSpec& c : world.corridors) {
+      if (PointSegmentDistance(front, c.centreline) >= c.width_m / 2) continue;
+      ++inside;
+      const Vec2 along = c.centreline.b - c.centreline.a;
+      sides[c.id].insert(Cross(along, world.SignPosition(*plate) - c.centreline.a) > 0);
+    }
+    EXPECT_EQ(inside, 1);
+  }
+  for (const CorridorSpec& c : world.corridors) {
+    if (c.id != "lift_lobby") {
+      EXPECT_EQ(sides[c.id].size(), 2u) << c.id;
+    }
+  }
+  int open = 0, unplated = 0;
+  for (size_t d = 0; d < world.doors.size(); ++d) {
+    open += world.doors[d].open;
+    unplated += std::none_of(plates.begin(), plates.end(),
+                             [&](const TextSign* p) { return p->door_index == static_cast<int>(d); });
+  }
+  EXPECT_EQ(unplated, 2);  // the lifts
+  EXPECT_GE(open, static_cast<int>(plates.size()) / 7);
+  EXPECT_LE(open, static_cast<int>(plates.size()) / 3);
+  EXPECT_TRUE(std::any_of(world.signs.begin(), world.signs.end(),
+                          [](const TextSign& s) { return s.kind == TextKind::kDistractor && s.text == "LIFT"; }));
+}
+
+TEST(ParseWorldYaml, ReadsCorridorsAndNamesBadOnes) {
+  const std::string good =
+      std::string(kMinimal) + "corridors:\n  - {id: main, from: [0, 1], to: [10, 1], width_m: 2}\n";
+  const World world = ParseWorldYaml(good, "w.yaml");
+  ASSERT_EQ(world.corridors.size(), 1u);
+  EXPECT_EQ(world.corridors[0].id, "main");
+  EXPECT_DOUBLE_EQ(world.corridors[0].centreline.b.x, 10.0);
+  EXPECT_DOUBLE_EQ(world.corridors[0].width_m, 2.0);
+  EXPECT_TRUE(ParseWorldYaml(kMinimal, "w.yaml").corridors.empty());
+  const auto error = [&](const std::string& line) {
+    return ErrorOf([&] { ParseWorldYaml(good + "  - " + line + "\n", "w.yaml"); });
+  };
+  EXPECT_EQ(error("{id: main, from: [0, 1], to: [5, 1], width_m: 2}"),
+            "w.yaml: corridors[1].id: duplicate corridor id 'main'");
+  EXPECT_EQ(error("{id: b, from: [3, 1], to: [3, 1], width_m: 2}"),
+            "w.yaml: corridors[1].to: must be at least 1 mm from 'from'");
+  EXPECT_EQ(error("{id: b, from: [0, 1], to: [5, 1], width_m: 0}"),
+            "w.yaml: corridors[1].width_m: must be > 0, got 0.000000");
+  EXPECT_NE(error("{id: b, from: [0, .nan], to: [5, 1], width_m: 2}").find("w.yaml: corridors[1].from"),
+            std::string::npos);
+  EXPECT_NE(error("{id: b, from: [0, 1], to: [5, 1]}").find("w.yaml: corridors[1]"), std::string::npos);
+  EXPECT_NE(error("{id: b, from: [0, 1], to: [5, 1], width_m: 2, widht: 3}").find("unknown field 'widht'"),
+            std::string::npos);
 }
 
 TEST(ParseWorldYaml, PlacesAPlateBesideItsDoorAndConvertsDegrees) {

@@ -89,6 +89,15 @@ struct Surface {
   ColorRgb color{225, 222, 210};
 };
 
+// Ground truth of one corridor (world file `corridors[]`): its centreline from `centreline.a` to
+// `centreline.b` (world frame, metres) and its nominal width, wall to wall (metres). Not used by the
+// simulator; for per-corridor map measures (src/eval/floor_measure.h).
+struct CorridorSpec {
+  std::string id;
+  Segment centreline;
+  double width_m = 0.0;
+};
+
 struct World {
   int format_version = 1;
   std::string name;
@@ -104,6 +113,7 @@ struct World {
   double robot_radius_m = 0.2;
   SensorOptions sensors;
   std::vector<LightZone> lighting;
+  std::vector<CorridorSpec> corridors;  // optional ground truth, empty if the file gives none
 
   // Derived by BuildSurfaces(): what the laser and the camera see.
   std::vector<Surface> surfaces;
