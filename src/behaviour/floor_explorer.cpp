@@ -80,6 +80,7 @@ void FloorExplorer::EndPass(PassEnd why) {
     return;
   }
   turn_pending_ = true;  // the turn waits for a straight stretch of the pass's first corridor
+  turn_pending_since_m_ = total_distance_m_;
 }
 
 VelocityCommand FloorExplorer::Step(const std::vector<float>& ranges_m, double angle_min_rad,
@@ -103,8 +104,13 @@ VelocityCommand FloorExplorer::Step(const std::vector<float>& ranges_m, double a
     }
     // Turn round beside a straight wall, heading as the pass started: back in the corridor it started in,
     // not in a side corridor (where turning round and following the same side would re-trace pass 1).
-    if (turn_pending_ && straight_m_ >= options_.straight_before_turn_m &&
-        std::fabs(NormalizeAngle(pose.theta_rad - pass_heading_rad_)) <= options_.turn_heading_tolerance_rad) {
+    // Without a heading (no straight stretch in the whole pass), or still no such place after driving
+    // 2 × min_revisit_travel_m more, any straight stretch will do.
+    const bool heading_ok = !pass_heading_set_ ||
+                            total_distance_m_ - turn_pending_since_m_ > 2.0 * options_.min_revisit_travel_m ||
+                            std::fabs(NormalizeAngle(pose.theta_rad - pass_heading_rad_)) <=
+                                options_.turn_heading_tolerance_rad;
+    if (turn_pending_ && straight_m_ >= options_.straight_before_turn_m && heading_ok) {
       turn_pending_ = false;
       phase_ = ExplorePhase::kTurnAround;
       turned_rad_ = 0.0;

@@ -34,8 +34,12 @@ std::optional<double> RaySegmentDistance(Vec2 origin, Vec2 unit_direction, const
   if (std::fabs(denom) < 1e-12) return std::nullopt;  // parallel: grazing rays never hit
   const Vec2 w = segment.a - origin;
   const double t = Cross(w, e) / denom;           // along the ray
-  const double u = Cross(w, unit_direction) / denom;  // along the segment
-  if (t < 0.0 || u < 0.0 || u > 1.0) return std::nullopt;
+  double u = Cross(w, unit_direction) / denom;  // along the segment
+  // Segments are closed with a hair of slack (1e-9 of their length): where two walls meet, rounding puts a
+  // ray through the shared end point just outside both of them, and the laser saw through the corner.
+  constexpr double kSlack = 1e-9;
+  if (t < 0.0 || u < -kSlack || u > 1.0 + kSlack) return std::nullopt;
+  u = std::clamp(u, 0.0, 1.0);
   if (t_along_segment != nullptr) *t_along_segment = u;
   return t;
 }

@@ -59,14 +59,16 @@ void ApplySets(const std::string& sets, TextSlamOptions* options) {
   }
 }
 
-void PrintSummary(const MapEvalResult& r, MapMethod method, std::uint64_t seed) {
-  std::printf("world %s, %s, seed %llu: sweep %s, %.0f s simulated in %.1f s (SLAM %.1f s CPU, %d/%d scans, %d degenerate)\n",
-              r.world_name.c_str(), MapMethodName(method), static_cast<unsigned long long>(seed),
+void PrintSummary(const MapEvalResult& r, MapMethod method, std::uint64_t seed, MapDrive drive) {
+  std::printf("world %s, %s, seed %llu: %s %s, %.0f s simulated in %.1f s (SLAM %.1f s CPU, %d/%d scans, %d degenerate)\n",
+              r.world_name.c_str(), MapMethodName(method), static_cast<unsigned long long>(seed), MapDriveName(drive),
               r.sweep_done ? "done" : "NOT finished", r.sim_seconds, r.seconds, r.slam_seconds, r.scans_processed,
               r.scans, r.degenerate_scans);
-  std::printf("  length %.3f m (true %.3f) accuracy %.2f %%; width %.3f m (true %.3f) accuracy %.2f %%\n",
-              r.estimate.length_m, r.truth.length_m, 100.0 * r.length_accuracy, r.estimate.width_m, r.truth.width_m,
-              100.0 * r.width_accuracy);
+  if (r.corridors.empty()) {  // one straight corridor: its principal axis (with corridors: per corridor below)
+    std::printf("  length %.3f m (true %.3f) accuracy %.2f %%; width %.3f m (true %.3f) accuracy %.2f %%\n",
+                r.estimate.length_m, r.truth.length_m, 100.0 * r.length_accuracy, r.estimate.width_m, r.truth.width_m,
+                100.0 * r.width_accuracy);
+  }
   std::printf("  plates: %d/%d mapped (%d in the map, %d/%d reports used), RMSE %.3f m, max %.3f m; final pose "
               "error %.3f m; peak RSS %.0f MB\n",
               r.plates.plates_mapped, r.plates.plates_true, r.plates.plates_in_map, r.plate_reports_used,
@@ -151,7 +153,7 @@ int RunMapCommand(const std::vector<std::string>& args, const std::string& comma
     throw UsageError(std::string("map: --drive: ") + e.what() + " (or auto)");
   }
   const MapEvalResult result = RunMapEval(world, options);
-  PrintSummary(result, options.method, options.seed);
+  PrintSummary(result, options.method, options.seed, options.drive);
   PrintDrive(result, options.drive);
   const std::string out_dir = parsed.String("out-dir");
   if (!out_dir.empty()) {

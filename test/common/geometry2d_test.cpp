@@ -38,6 +38,20 @@ TEST(RaySegmentDistance, HitsAWallAheadAndReportsWhereOnIt) {
   EXPECT_NEAR(u, 0.25, 1e-12);
 }
 
+TEST(RaySegmentDistance, ARayAimedAtTheJointOfTwoWallsHitsOneOfThem) {
+  // Two walls meeting at a corner, as in any closed world; rays from many places aimed exactly at the joint.
+  const Vec2 corner{42.0, 26.0};
+  const Segment east{{42.0, 0.0}, corner}, north{corner, {0.0, 26.0}};
+  int misses = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Vec2 origin{40.0 + 0.0013 * i, 24.1 + 0.00071 * i};
+    const Vec2 d = corner - origin;
+    const Vec2 dir = (1.0 / Norm(d)) * d;
+    if (!RaySegmentDistance(origin, dir, east) && !RaySegmentDistance(origin, dir, north)) ++misses;
+  }
+  EXPECT_EQ(misses, 0);
+}
+
 TEST(RaySegmentDistance, MissesBehindBesideAndParallel) {
   const Segment wall{{2.0, -1.0}, {2.0, 1.0}};
   EXPECT_FALSE(RaySegmentDistance({0.0, 0.0}, {-1.0, 0.0}, wall));       // behind

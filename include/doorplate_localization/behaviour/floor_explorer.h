@@ -47,7 +47,8 @@ struct FloorExplorerOptions {
   // at the start of the pass (measured after its first such straight stretch): so it turns in the
   // corridor it started in, not at a junction or in a side corridor, where turning round and following
   // the same side would re-trace the pass just ended. Odometry's heading drift over a pass must stay
-  // below the tolerance (0.8 rad: a side corridor is 1.57 rad off).
+  // below the tolerance (0.8 rad: a side corridor is 1.57 rad off). Without such a heading, or with no
+  // such place within 2 × min_revisit_travel_m of the pass's end, any straight stretch will do.
   double straight_before_turn_m = 1.0;
   double straight_bearing_rad = 0.2;
   double turn_heading_tolerance_rad = 0.8;
@@ -100,6 +101,7 @@ class FloorExplorer {
   double pass_start_distance_m_ = 0.0;
   double turned_rad_ = 0.0;
   bool turn_pending_ = false;    // a pass ended; waiting for a straight stretch to turn round
+  double turn_pending_since_m_ = 0.0;
   double straight_m_ = 0.0;      // driven straight beside a wall, metres
   bool pass_heading_set_ = false;
   double pass_heading_rad_ = 0.0;  // heading on the pass's first straight stretch
