@@ -16,4 +16,7 @@ int RunLocalizeCommand(const std::vector<std::string>& args, const std::string& 
 // SLAM of a corridor sweep, laser only or with doorplate text (paper Table II): map_command.cpp.
 int RunMapCommand(const std::vector<std::string>& args, const std::string& command_line);
 
+// Go to any room on a floor from a random corridor pose, on the Text AMCL estimate (issue 17): goto_command.cpp.
+int RunGotoCommand(const std::vector<std::string>& args, const std::string& command_line);
+
 }  // namespace doorplate_localization

@@ -26,6 +26,9 @@ std::vector<OptionSpec> LocalizeOptions() {
       {"kidnap", "off", "after a successful convergence teleport the robot and measure the recovery (--kidnap alone: on)"},
       {"max-travel-m", "120", "a search (and a recovery) fails after the robot drove this far"},
       {"speed-mps", "0.4", "cruise speed of the robot, m/s"},
+      {"drive", "auto", "patrol (one corridor: along a wall, turn at the end, back) or contour (a floor: follow the "
+                        "right wall round corners, into side corridors, out of dead ends); auto: contour when the "
+                        "world lists more than one corridor"},
       {"known-rooms", "off", "give the text validator the text map's room list (on) or not (off)"},
       {"camera-hz", "0", "camera rate, Hz (0: the world's)"},
       {"recognizer", "tesseract", "text recogniser: tesseract or ppocr (the learned one; scripts/fetch_ocr_models.sh)"},
@@ -55,8 +58,8 @@ std::string DefaultMapPath(const std::string& world_path, const World& world) {
 
 void PrintSummary(const LocalizeEvalResult& r, const LocalizeEvalOptions& o) {
   const LocalizeSummary s = Summarize(r);
-  std::printf("world %s, %s, %d trial(s), seed %llu%s\n", r.world_name.c_str(), ToString(r.method), s.trials,
-              static_cast<unsigned long long>(o.seed), r.kidnap ? ", kidnap" : "");
+  std::printf("world %s, %s, %d trial(s), seed %llu, drive %s%s\n", r.world_name.c_str(), ToString(r.method),
+              s.trials, static_cast<unsigned long long>(o.seed), ToString(o.drive), r.kidnap ? ", kidnap" : "");
   for (const LocalizeTrial& t : r.trials) {
     std::printf("  trial %2d: start (%.2f, %.2f, %.0f deg) %s after %.1f m: error %.2f m %.1f deg, %d/%d plates used",
                 t.index, t.start_pose.x_m, t.start_pose.y_m, t.start_pose.theta_rad * 180.0 / M_PI,
@@ -70,9 +73,10 @@ void PrintSummary(const LocalizeEvalResult& r, const LocalizeEvalOptions& o) {
     std::printf(" [%.0f s]\n", t.wall_seconds);
   }
   std::printf("  success %d/%d = %.1f %%, wrong convergences %d, not converged %d (estimate right at the end: %d); "
-              "median travel %.1f m, median error %.3f m %.2f deg\n",
+              "median travel %.1f m (longest %.1f m), median error %.3f m %.2f deg\n",
               s.successes, s.trials, 100.0 * s.success_rate, s.wrong_convergences, s.not_converged,
-              s.not_converged_estimate_right, s.median_travel_m, s.median_final_error_m, s.median_final_error_deg);
+              s.not_converged_estimate_right, s.median_travel_m, s.longest_travel_m, s.median_final_error_m,
+              s.median_final_error_deg);
   if (r.kidnap) {
     std::printf("  kidnap: recovered %d/%d = %.1f %%, median recovery travel %.1f m, lost detected %d\n", s.recoveries,
                 s.kidnaps, 100.0 * s.recovery_rate, s.median_recovery_travel_m, s.kidnap_lost_detected);
@@ -86,7 +90,7 @@ int RunLocalizeCommand(const std::vector<std::string>& args, const std::string& 
   EvalArgs parsed("localize", LocalizeOptions());
   parsed.Parse(ExpandKidnapFlag(args));
   if (parsed.help_requested()) {
-    std::cout << "Global localization and kidnapped-robot trials on a simulated corridor (paper Table III).\n"
+    std::cout << "Global localization and kidnapped-robot trials on a simulated corridor (paper Table III) or floor.\n"
               << parsed.Usage();
     return 0;
   }
@@ -129,6 +133,13 @@ int RunLocalizeCommand(const std::vector<std::string>& args, const std::string& 
 
   const std::string world_path = parsed.String("world");
   const World world = LoadWorldFile(world_path);
+  const std::string drive = parsed.String("drive");
+  try {
+    options.drive = drive == "auto" ? (world.corridors.size() > 1 ? LocalizeDrive::kContour : LocalizeDrive::kPatrol)
+                                    : ParseLocalizeDrive(drive);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("localize: --drive: ") + e.what() + " (or auto)");
+  }
   const std::string map_path = parsed.String("map").empty() ? DefaultMapPath(world_path, world) : parsed.String("map");
   auto text_map = std::make_shared<const TextMap>(LoadTextMap(map_path));
   if (text_map->occupancy_map.empty()) {

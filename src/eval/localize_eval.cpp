@@ -43,7 +43,7 @@ class TrialRun {
   TrialRun(const World& world, const OccupancyGrid& grid, std::shared_ptr<const TextMap> text_map,
            const StartPoseSampler& poses, const LocalizeEvalOptions& options, int index)
       : options_(options), poses_(poses), seed_(PassSeed(options.seed, index)), rng_(seed_),
-        sim_(world, SimOptions(seed_)), sweep_(SweepOptions(options)) {
+        sim_(world, SimOptions(seed_)), sweep_(SweepOptions(options)), contour_(ContourOptions(options)) {
     trial_.index = index;
     trial_.seed = seed_;
     trial_.start_pose = poses_.Sample(rng_);
@@ -108,18 +108,27 @@ class TrialRun {
     o.follower.cruise_speed_mps = options.speed_mps;
     return o;
   }
+  static ContourSteeringOptions ContourOptions(const LocalizeEvalOptions& options) {
+    ContourSteeringOptions o = options.contour;
+    o.cruise_speed_mps = options.speed_mps;
+    return o;
+  }
 
   // Control and the session's scan input at the laser's rate. Returns true when the trial is over.
   bool ScanStep() {
     last_scan_ = ToLocalizationScan(sim_.Scan(), sim_.world().sensors.laser);
-    VelocityCommand cmd = Sweep();
+    const VelocityCommand cmd = Drive();
     sim_.SetCommand(cmd.linear_mps, cmd.angular_rps);
     session_->AddScan(sim_.time_s(), sim_.odom_pose(), last_scan_);
     return CheckState();
   }
 
-  // The search strategy: corridor sweeps, a new one as soon as one ends.
-  VelocityCommand Sweep() {
+  // The search strategy: contour following (it never ends), or corridor sweeps, a new one as soon as one
+  // ends.
+  VelocityCommand Drive() {
+    if (options_.drive == LocalizeDrive::kContour) {
+      return contour_.Step(last_scan_.ranges_m, last_scan_.angle_min_rad, last_scan_.angle_increment_rad).command;
+    }
     VelocityCommand cmd = sweep_.Step(last_scan_.ranges_m, last_scan_.angle_min_rad, last_scan_.angle_increment_rad,
                                       sim_.odom_pose());
     if (sweep_.phase() == SweepPhase::kDone) {
@@ -198,10 +207,11 @@ class TrialRun {
   std::mt19937_64 rng_;
   Simulator sim_;
   CorridorSweep sweep_;
+  const ContourSteering contour_;
   std::unique_ptr<TextAmclSession> session_;
   std::unique_ptr<TextExtractor> extractor_;
   double camera_yaw_rad_ = 0.0;
-  LocalizationScan last_scan_;  // the sweep drives on it
+  LocalizationScan last_scan_;  // the drive steers on it
   double search_start_travel_m_ = 0.0;
   double search_start_time_s_ = 0.0;
   LocalizeTrial trial_;
@@ -210,6 +220,14 @@ class TrialRun {
 }  // namespace
 
 const char* ToString(LocalizeMethod method) { return method == LocalizeMethod::kAmcl ? "amcl" : "text_amcl"; }
+
+const char* ToString(LocalizeDrive drive) { return drive == LocalizeDrive::kPatrol ? "patrol" : "contour"; }
+
+LocalizeDrive ParseLocalizeDrive(const std::string& name) {
+  if (name == "patrol") return LocalizeDrive::kPatrol;
+  if (name == "contour") return LocalizeDrive::kContour;
+  throw std::invalid_argument("'" + name + "' is not a drive (patrol or contour)");
+}
 
 LocalizeSummary Summarize(const LocalizeEvalResult& result) {
   LocalizeSummary s;
@@ -235,6 +253,7 @@ LocalizeSummary Summarize(const LocalizeEvalResult& result) {
   s.success_rate = s.trials > 0 ? static_cast<double>(s.successes) / s.trials : 0.0;
   s.recovery_rate = s.kidnaps > 0 ? static_cast<double>(s.recoveries) / s.kidnaps : 0.0;
   s.median_travel_m = Median(travel);
+  s.longest_travel_m = travel.empty() ? 0.0 : *std::max_element(travel.begin(), travel.end());
   s.median_final_error_m = Median(error_m);
   s.median_final_error_deg = Median(error_deg);
   s.median_recovery_travel_m = Median(recovery_travel);
@@ -249,11 +268,12 @@ LocalizeEvalResult RunLocalizeEval(const World& world, const OccupancyGrid& grid
   World run_world = world;
   if (options.camera_rate_hz > 0.0) run_world.sensors.camera.rate_hz = options.camera_rate_hz;
   BuildSurfaces(run_world);
-  const StartPoseSampler poses(FindCorridorBand(run_world), ground_truth_grid, options.poses);
+  const StartPoseSampler poses = MakeStartPoseSampler(run_world, ground_truth_grid, options.poses);
   LocalizeEvalResult result;
   result.world_name = world.name;
   result.method = options.method;
   result.kidnap = options.kidnap;
+  result.floor_start_poses = poses.on_floor();
   for (int i = 0; i < options.trials; ++i) {
     TrialRun run(run_world, grid, text_map, poses, options, i);
     result.trials.push_back(run.Run());

@@ -1,9 +1,12 @@
 // The global-localization experiment of the paper's Section 4.2 (Table III) and kidnapped-robot trials on
-// a simulated world. Each trial puts the robot at a random pose in the main corridor (StartPoseSampler:
-// heading along the corridor ± heading noise), starts the filter with global localization (max_particles
-// uniform over the free cells) and lets the robot search with the paper's strategy (Sec. 3.4: follow a wall
-// along the corridor, turn around at the end — CorridorSweep, restarted whenever a sweep ends) in the
-// Simulator (physics 100 Hz, laser and control at the laser's rate). The filter runs in a TextAmclSession
+// a simulated world. Each trial puts the robot at a random pose in the main corridor, or anywhere on a floor
+// whose world lists its corridors (StartPoseSampler: heading along the corridor ± heading noise), starts
+// the filter with global localization (max_particles uniform over the free cells) and lets the robot
+// search in the Simulator (physics 100 Hz, laser and control at the laser's rate) with one of two drives:
+// kPatrol, the paper's strategy (Sec. 3.4: follow a wall along the corridor, turn around at the end —
+// CorridorSweep, restarted whenever a sweep ends), or kContour, for floors of several corridors
+// (ContourSteering: follow one wall wherever it leads, round corners, into side corridors and out of dead
+// ends; it never ends). The drive only moves the robot: the filter's loop is the same for both. The filter runs in a TextAmclSession
 // (mcl/text_amcl_session.h), the loop the Text AMCL nodelet runs: scans with their odometry, plate readings
 // with the odometry of their moment, its ordering, range and unknown-room rules. With text_amcl every camera
 // image goes to the real TextExtractor and each plate report becomes a PlateReading for the session; amcl
@@ -26,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "doorplate_localization/behaviour/contour_steering.h"
 #include "doorplate_localization/behaviour/corridor_sweep.h"
 #include "doorplate_localization/maps/occupancy_grid.h"
 #include "doorplate_localization/maps/text_map.h"
@@ -40,19 +44,28 @@ enum class LocalizeMethod { kAmcl, kTextAmcl };
 // "amcl", "text_amcl".
 const char* ToString(LocalizeMethod method);
 
+// How the robot searches: kPatrol = CorridorSweep out and back (one corridor), kContour = ContourSteering
+// along one wall wherever it leads (a floor).
+enum class LocalizeDrive { kPatrol, kContour };
+// "patrol", "contour"; ParseLocalizeDrive throws std::invalid_argument naming anything else.
+const char* ToString(LocalizeDrive drive);
+LocalizeDrive ParseLocalizeDrive(const std::string& name);
+
 struct LocalizeEvalOptions {
   LocalizeMethod method = LocalizeMethod::kTextAmcl;
   int trials = 30;
   std::uint64_t seed = 1;
   bool kidnap = false;
   double max_travel_m = 120.0;          // per search (and again after a kidnap)
-  double speed_mps = 0.4;               // cruise speed (sweep.follower.cruise_speed_mps)
+  double speed_mps = 0.4;               // cruise speed (of sweep.follower and of contour)
+  LocalizeDrive drive = LocalizeDrive::kPatrol;
   double success_distance_m = 0.3;
   double success_angle_rad = 10.0 * M_PI / 180.0;
   double camera_rate_hz = 0.0;          // 0: the world's camera rate
   bool known_rooms = false;             // give the text validator the text map's room list
   TextAmclSetupOptions filter;          // use_text and the random seed are set per trial
-  CorridorSweepOptions sweep;
+  CorridorSweepOptions sweep;           // drive kPatrol
+  ContourSteeringOptions contour;       // drive kContour (cruise_speed_mps is set from speed_mps)
   TextExtractorOptions extractor;       // known rooms and the tracker intrinsics are set from the run
   StartPoseSamplerOptions poses;
 };
@@ -96,6 +109,7 @@ struct LocalizeEvalResult {
   std::string world_name;
   LocalizeMethod method = LocalizeMethod::kTextAmcl;
   bool kidnap = false;
+  bool floor_start_poses = false;  // poses drawn over the world's corridors (else the main corridor band)
   std::vector<LocalizeTrial> trials;
   double seconds = 0.0;  // wall clock, whole run
 };
@@ -109,6 +123,7 @@ struct LocalizeSummary {
   int not_converged_estimate_right = 0;
   double success_rate = 0.0;
   double median_travel_m = 0.0, median_final_error_m = 0.0, median_final_error_deg = 0.0;
+  double longest_travel_m = 0.0;  // of the converged trials
   int kidnaps = 0, recoveries = 0, kidnap_lost_detected = 0;
   double recovery_rate = 0.0;  // recoveries / kidnaps
   double median_recovery_travel_m = 0.0;

@@ -37,7 +37,7 @@ void WriteTrial(const LocalizeTrial& t, bool kidnap, JsonWriter* json) {
   json->Field("sim_seconds", t.sim_seconds).Field("seconds", t.wall_seconds).EndObject();
 }
 
-void WriteOptions(const LocalizeEvalOptions& o, JsonWriter* json) {
+void WriteOptions(const LocalizeEvalOptions& o, bool floor, JsonWriter* json) {
   const TextAmclOptions& f = o.filter.filter;
   json->Key("options")
       .BeginObject()
@@ -47,7 +47,10 @@ void WriteOptions(const LocalizeEvalOptions& o, JsonWriter* json) {
       .Field("success_angle_deg", o.success_angle_rad * 180.0 / M_PI)
       .Field("camera_rate_hz", o.camera_rate_hz)
       .Field("known_rooms", o.known_rooms)
-      .Field("start_heading", "along the corridor (+x or -x), uniform noise")
+      .Field("drive", ToString(o.drive))
+      .Field("start_poses", floor ? "floor: the world's corridors, length-weighted" : "main corridor band")
+      .Field("start_heading", floor ? "along the corridor's centreline (either way), uniform noise"
+                                    : "along the corridor (+x or -x), uniform noise")
       .Field("start_heading_noise_deg", o.poses.heading_noise_rad * 180.0 / M_PI)
       .Field("min_kidnap_distance_m", o.poses.min_kidnap_distance_m)
       .Field("laser_model_type", ToString(o.filter.laser_model_type))
@@ -80,6 +83,7 @@ void WriteLocalizeEvalJson(const LocalizeEvalResult& r, const LocalizeEvalRunInf
       .Field("not_converged", s.not_converged)
       .Field("not_converged_estimate_right", s.not_converged_estimate_right)
       .Field("median_travel_m", s.median_travel_m)
+      .Field("longest_travel_m", s.longest_travel_m)
       .Field("median_final_error_m", s.median_final_error_m)
       .Field("median_final_error_deg", s.median_final_error_deg);
   if (r.kidnap) {
@@ -90,7 +94,7 @@ void WriteLocalizeEvalJson(const LocalizeEvalResult& r, const LocalizeEvalRunInf
         .Field("median_recovery_travel_m", s.median_recovery_travel_m);
   }
   json->Field("seconds", r.seconds);
-  WriteOptions(info.options, json);
+  WriteOptions(info.options, r.floor_start_poses, json);
   json->Key("per_trial").BeginArray();
   for (const LocalizeTrial& t : r.trials) WriteTrial(t, r.kidnap, json);
   json->EndArray().EndObject();

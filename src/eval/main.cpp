@@ -23,6 +23,7 @@ const Subcommand kSubcommands[] = {
     {"ocr", dl::RunOcrCommand, "doorplate text reading on a corridor sweep (paper Table I, Figure 12)"},
     {"map", dl::RunMapCommand, "SLAM of a corridor sweep, rbpf or rbpf_text (paper Table II)"},
     {"localize", dl::RunLocalizeCommand, "global localization and kidnap trials, amcl or text_amcl (paper Table III)"},
+    {"goto", dl::RunGotoCommand, "go to a random room from a random corridor pose on a floor (issue 17)"},
 };
 
 void PrintUsage(std::FILE* out) {

@@ -95,6 +95,7 @@ void TextAmcl::Initialize(const Pose2D& mean, const Eigen::Matrix3d& covariance)
   }
   const Eigen::Matrix3d transform =
       eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
+  awaiting_plate_ = false;
   std::normal_distribution<double> gauss(0.0, 1.0);
   std::vector<Pose2D> poses(options_.max_particles);
   for (Pose2D& p : poses) {
@@ -105,6 +106,7 @@ void TextAmcl::Initialize(const Pose2D& mean, const Eigen::Matrix3d& covariance)
 }
 
 void TextAmcl::GlobalLocalization() {
+  awaiting_plate_ = options_.converge_after_plate && models_.text != nullptr;
   std::vector<Pose2D> poses(options_.max_particles);
   for (Pose2D& p : poses) p = models_.grid->SampleFreePose(rng_);
   ReplaceParticles(poses);

@@ -74,6 +74,7 @@ PlateUpdateResult TextAmcl::UpdatePlate(const PlateReading& reading) {
   ApplyLogLikelihoods(ll, &particles_);
   clusters_valid_ = false;
   result.used = true;
+  awaiting_plate_ = false;
   ++counters_.plate_updates;
   counters_.total_reseeded_particles += result.reseeded_particles;
   if (result.contradicted_estimate) {

@@ -57,7 +57,7 @@ bool TextAmcl::Converged(const PoseCluster& best) const {
 
 void TextAmcl::UpdateHealth(bool after_resample) {
   const ClusterResult& c = Clusters();
-  const bool converged = !c.clusters.empty() && Converged(c.clusters.front());
+  const bool converged = !awaiting_plate_ && !c.clusters.empty() && Converged(c.clusters.front());
   if (state_ == LocalizationState::kLost) {
     const bool likelihood_ok = recovery_.FastToSlowRatio() >= options_.lost_likelihood_ratio;
     if (!(after_resample && converged && likelihood_ok)) return;

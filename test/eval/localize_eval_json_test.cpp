@@ -56,7 +56,7 @@ TEST(WriteLocalizeEvalJson, WritesTheTableThreeTotalsAndTheRun) {
   const std::string json = Json(ThreeTrials(false));
   for (const char* expected :
        {"\"method\": \"amcl\"", "\"seed\": 7,", "\"trials\": 3,", "\"successes\": 1,", "\"success_rate\": 0.3333333333,",
-        "\"wrong_convergences\": 1,", "\"not_converged\": 1,", "\"median_travel_m\": 6,",
+        "\"wrong_convergences\": 1,", "\"not_converged\": 1,", "\"median_travel_m\": 6,", "\"longest_travel_m\": 8,",
         "\"median_final_error_m\": 2.55,", "\"median_final_error_deg\": 2,", "\"seconds\": 12,",
         "\"command_line\": \"doorplate_eval localize --world worlds/w.yaml\"", "\"map_file\": \"maps/w.text_map.yaml\""}) {
     EXPECT_NE(json.find(expected), std::string::npos) << expected << "\n" << json;
@@ -70,6 +70,14 @@ TEST(WriteLocalizeEvalJson, WritesOneRowPerTrialNamedByItsOutcome) {
   EXPECT_NE(json.find("\"convergence\": {"), std::string::npos);
   EXPECT_NE(json.find("\"end_of_search\": {"), std::string::npos);
   EXPECT_NE(json.find("\"truth\": [\n          1,\n          2,\n          0.5\n        ]"), std::string::npos) << json;
+}
+
+TEST(WriteLocalizeEvalJson, RecordsTheDriveAndWhereTheStartPosesCameFrom) {
+  LocalizeEvalResult result = ThreeTrials(false);
+  EXPECT_NE(Json(result).find("\"start_poses\": \"main corridor band\""), std::string::npos);
+  EXPECT_NE(Json(result).find("\"drive\": \"patrol\""), std::string::npos);
+  result.floor_start_poses = true;
+  EXPECT_NE(Json(result).find("\"start_poses\": \"floor: the world's corridors, length-weighted\""), std::string::npos);
 }
 
 TEST(WriteLocalizeEvalJson, AddsTheKidnapTotalsWhenKidnapping) {

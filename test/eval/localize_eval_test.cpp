@@ -1,4 +1,5 @@
-// The localization experiment on a tiny symmetric corridor, with Tesseract in the loop for text_amcl.
+// The localization experiment on a tiny symmetric corridor, with Tesseract in the loop for text_amcl, and
+// the contour drive on a tiny L-shaped floor.
 #include "localize_eval.h"
 
 #include <gtest/gtest.h>
@@ -87,6 +88,36 @@ TEST(LocalizeEval, RefusesTextAmclWithoutATextMapAndBadOptions) {
   EXPECT_THROW(RunLocalizeEval(c.world, c.grid, nullptr, c.grid, options), std::invalid_argument);
 }
 
+TEST(LocalizeEval, ContourDriveSearchesAFloorFromPosesInEveryCorridor) {
+  const World world = test::LShapedFloor();
+  const OccupancyGrid grid = RasterizeWorld(world, 0.05, world.sensors.laser.mount_height_m);
+  LocalizeEvalOptions options = Fast(LocalizeMethod::kAmcl, 4);
+  options.drive = LocalizeDrive::kContour;
+  options.max_travel_m = 15.0;
+  const LocalizeEvalResult r = RunLocalizeEval(world, grid, nullptr, grid, options);
+  EXPECT_TRUE(r.floor_start_poses);
+  ASSERT_EQ(r.trials.size(), 4u);
+  for (const LocalizeTrial& t : r.trials) {
+    // The robot drives (no wall blocks it) until the filter converges or the search ends.
+    EXPECT_GT(t.fix.travel_m, 0.5) << "trial " << t.index;
+    if (!t.converged) {
+      EXPECT_GE(t.fix.travel_m, options.max_travel_m) << "trial " << t.index;
+    }
+    // It never leaves the floor: the truth stays inside the L's walls.
+    const Pose2D& p = t.fix.truth;
+    const bool inside = (p.x_m > 0.0 && p.x_m < 10.0 && p.y_m > 0.0 && p.y_m < 2.0) ||
+                        (p.x_m > 8.0 && p.x_m < 10.0 && p.y_m >= 2.0 && p.y_m < 6.0);
+    EXPECT_TRUE(inside) << "trial " << t.index << " at (" << p.x_m << ", " << p.y_m << ")";
+  }
+}
+
+TEST(LocalizeDrive, ParsesItsNamesAndRefusesOthers) {
+  EXPECT_EQ(ParseLocalizeDrive("patrol"), LocalizeDrive::kPatrol);
+  EXPECT_EQ(ParseLocalizeDrive("contour"), LocalizeDrive::kContour);
+  EXPECT_STREQ(ToString(LocalizeDrive::kContour), "contour");
+  EXPECT_THROW(ParseLocalizeDrive("explore"), std::invalid_argument);
+}
+
 TEST(Summarize, TakesMediansOverTheConvergedTrialsOnly) {
   LocalizeEvalResult r;
   for (const auto& [converged, error, travel] :
@@ -106,6 +137,7 @@ TEST(Summarize, TakesMediansOverTheConvergedTrialsOnly) {
   EXPECT_EQ(s.not_converged_estimate_right, 1);
   EXPECT_EQ(s.success_rate, 0.4);
   EXPECT_EQ(s.median_travel_m, 6.0);
+  EXPECT_EQ(s.longest_travel_m, 20.0);
   EXPECT_EQ(s.median_final_error_m, 0.2);
   EXPECT_EQ(s.kidnaps, 0);
   EXPECT_EQ(s.recovery_rate, 0.0);
