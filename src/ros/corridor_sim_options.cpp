@@ -1,8 +1,10 @@
+// CorridorSimNodelet's parameter table and loader: every parameter once (name, field, default, rule, doc).
+// The simulator core has no options check of its own, so the few rules between values (the principal
+// point within the image, six different frames, the world's sensor rates) stay here.
 #include "corridor_sim_options.h"
 
 #include <cmath>
 #include <set>
-#include <sstream>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -10,97 +12,129 @@
 #include "doorplate_localization/sim/world_loader.h"
 
 namespace doorplate_localization {
-CorridorSimOptions LoadCorridorSimOptions(ros::NodeHandle& private_nh) {
-  const ros::NodeHandle& nh = private_nh;
+
+const ParamTable<CorridorSimOptions>& CorridorSimParamTable() {
+  using O = CorridorSimOptions;
+  namespace r = param_rules;
+  const auto camera_size = r::Holds("in [16, 8192]", [](double v) { return v >= 16 && v <= 8192; });
+  const auto intrinsic = r::Holds("finite and >= 0 pixels (0: derived)",
+                                  [](double v) { return std::isfinite(v) && v >= 0.0 && v <= 1e6; });
+  static const ParamTable<O> table = {
+      Param<O>("world", DOORPLATE_PARAM_FIELD(world_file),
+               "world file, docs/world-format.md; its `sensors:` block sets the sensor models and rates")
+          .DefaultText("(required)"),
+      Param<O>("start_x_m", DOORPLATE_PARAM_FIELD(world.start_pose.x_m),
+               "where the robot starts, world frame (e.g. a localization run from an unknown pose)", r::Finite())
+          .DefaultText("the world's `robot.start`"),
+      Param<O>("start_y_m", DOORPLATE_PARAM_FIELD(world.start_pose.y_m), "see `start_x_m`", r::Finite())
+          .DefaultText("the world's `robot.start`"),
+      ConvertedParam<O, double>(
+          "start_theta_deg", "world.start_pose.theta_rad",
+          [](const O& o) { return o.world.start_pose.theta_rad * 180.0 / M_PI; },
+          [](O& o, double deg) { o.world.start_pose.theta_rad = NormalizeAngle(deg * M_PI / 180.0); },
+          "the start heading, degrees", r::Finite())
+          .DefaultText("the world's `robot.start`"),
+      Param<O>("camera/width_px", DOORPLATE_PARAM_FIELD(world.sensors.camera.width_px),
+               "image width (e.g. 1280 for a common USB camera); `camera/camera_info` reports it", camera_size)
+          .DefaultText("the world's (640)"),
+      Param<O>("camera/height_px", DOORPLATE_PARAM_FIELD(world.sensors.camera.height_px), "image height",
+               camera_size)
+          .DefaultText("the world's (480)"),
+      Param<O>("camera/horizontal_fov_deg", DOORPLATE_PARAM_FIELD(world.sensors.camera.horizontal_fov_deg),
+               "horizontal field of view, degrees; gives fx when `camera/fx_px` is 0",
+               r::Holds("in (1, 170) degrees", [](double v) { return v > 1.0 && v < 170.0; }))
+          .DefaultText("the world's (60)"),
+      Param<O>("camera/fx_px", DOORPLATE_PARAM_FIELD(world.sensors.camera.fx_px),
+               "pinhole focal length; 0: from the field of view; a non-zero fx wins over the field of view",
+               intrinsic)
+          .DefaultText("the world's (0)"),
+      Param<O>("camera/fy_px", DOORPLATE_PARAM_FIELD(world.sensors.camera.fy_px), "0: fy = fx", intrinsic)
+          .DefaultText("the world's (0)"),
+      Param<O>("camera/cx_px", DOORPLATE_PARAM_FIELD(world.sensors.camera.cx_px),
+               "principal point column, at most width − 1; 0: (width − 1)/2", intrinsic)
+          .DefaultText("the world's (0)"),
+      Param<O>("camera/cy_px", DOORPLATE_PARAM_FIELD(world.sensors.camera.cy_px),
+               "principal point row, at most height − 1; 0: (height − 1)/2", intrinsic)
+          .DefaultText("the world's (0)"),
+      ConvertedParam<O, int>(
+          "seed", "simulator.seed", [](const O& o) { return static_cast<int>(o.simulator.seed); },
+          [](O& o, int seed) { o.simulator.seed = static_cast<std::uint64_t>(seed); },
+          "seed of the odometry, laser and camera noise streams (independent streams: subscribing to the "
+          "camera never changes the odometry)",
+          r::AtLeast(0)),
+      Param<O>("real_time_factor", DOORPLATE_PARAM_FIELD(real_time_factor),
+               "simulated seconds per wall-clock second; 0 = as fast as possible",
+               r::Holds("finite and >= 0 (0 = as fast as possible)",
+                        [](double v) { return std::isfinite(v) && v >= 0.0; })),
+      Param<O>("publish_clock", DOORPLATE_PARAM_FIELD(publish_clock),
+               "publish `/clock`; run the graph with `/use_sim_time` true"),
+      Param<O>("physics_step_s", DOORPLATE_PARAM_FIELD(simulator.physics_step_s), "simulation step",
+               r::Holds("in (0, 0.1] seconds", [](double v) { return v > 0.0 && v <= 0.1; })),
+      Param<O>("max_linear_speed_mps", DOORPLATE_PARAM_FIELD(simulator.max_linear_speed_mps),
+               "`cmd_vel` is clamped to this", r::Positive()),
+      Param<O>("max_angular_speed_rps", DOORPLATE_PARAM_FIELD(simulator.max_angular_speed_rps),
+               "`cmd_vel` is clamped to this", r::Positive()),
+      Param<O>("cmd_vel_timeout_s", DOORPLATE_PARAM_FIELD(cmd_vel_timeout_s),
+               "simulated seconds without `cmd_vel` after which the robot stops", r::Positive()),
+      Param<O>("publish_ground_truth_tf", DOORPLATE_PARAM_FIELD(publish_ground_truth_tf),
+               "broadcast `map → odom` from the true pose (viewing without a localizer; never together with one)"),
+      Param<O>("odom_frame_id", DOORPLATE_PARAM_FIELD(odom_frame_id), "odometry frame", r::FrameId()),
+      Param<O>("base_frame_id", DOORPLATE_PARAM_FIELD(base_frame_id), "the robot's frame", r::FrameId()),
+      Param<O>("laser_frame_id", DOORPLATE_PARAM_FIELD(laser_frame_id), "frame of `scan`", r::FrameId()),
+      Param<O>("camera_body_frame_id", DOORPLATE_PARAM_FIELD(camera_body_frame_id),
+               "camera body, x along the optical axis (REP-103)", r::FrameId()),
+      Param<O>("camera_frame_id", DOORPLATE_PARAM_FIELD(camera_frame_id),
+               "optical frame of `camera/image_raw` and `camera/camera_info`: z forward, x right, y down",
+               r::FrameId()),
+      Param<O>("ground_truth_frame_id", DOORPLATE_PARAM_FIELD(ground_truth_frame_id),
+               "frame of `base_pose_ground_truth` (the world frame); the six frames differ", r::FrameId()),
+  };
+  return table;
+}
+
+CorridorSimOptions CorridorSimOptionsFrom(const ParamSource& source) {
   CorridorSimOptions o;
-  o.world_file = ReadParam(nh, "world", std::string());
+  const std::optional<ParamValue> world_file = source.Get("world", std::string());
+  o.world_file = world_file ? std::get<std::string>(*world_file) : "";
   if (o.world_file.empty()) {
-    throw ParameterError(nh.resolveName("world") + " is required: the path of a world file (worlds/*.yaml)");
+    throw ParameterError(source.Resolve("world") + " is required: the path of a world file (worlds/*.yaml)");
   }
   try {
     o.world = LoadWorldFile(o.world_file);
   } catch (const std::exception& e) {  // WorldFileError names the file and field
-    throw ParameterError(nh.resolveName("world") + " = '" + o.world_file + "' cannot be used: " + e.what());
+    throw ParameterError(source.Resolve("world") + " = '" + o.world_file + "' cannot be used: " + e.what());
   }
+  ApplyParamTable(CorridorSimParamTable(), source, &o);  // over the world's camera and start pose
 
-  // The camera's image size and intrinsics: the world's unless overridden (e.g. a 1280 x 720 USB camera on
-  // a built-in world). fx/fy/cx/cy 0 = derived (fx from the field of view, fy = fx, centred principal point).
-  CameraOptions& camera = o.world.sensors.camera;
-  camera.width_px = ReadParam(nh, "camera/width_px", camera.width_px);
-  camera.height_px = ReadParam(nh, "camera/height_px", camera.height_px);
-  RequireParam(camera.width_px >= 16 && camera.width_px <= 8192, nh, "camera/width_px", "in [16, 8192]",
-               camera.width_px);
-  RequireParam(camera.height_px >= 16 && camera.height_px <= 8192, nh, "camera/height_px", "in [16, 8192]",
-               camera.height_px);
-  camera.horizontal_fov_deg = ReadParam(nh, "camera/horizontal_fov_deg", camera.horizontal_fov_deg);
-  RequireParam(camera.horizontal_fov_deg > 1.0 && camera.horizontal_fov_deg < 170.0, nh,
-               "camera/horizontal_fov_deg", "in (1, 170) degrees", camera.horizontal_fov_deg);
-  for (const auto& [name, field, limit] :
-       {std::tuple<const char*, double*, double>{"camera/fx_px", &camera.fx_px, 1e6},
-        {"camera/fy_px", &camera.fy_px, 1e6},
-        {"camera/cx_px", &camera.cx_px, camera.width_px - 1.0},
-        {"camera/cy_px", &camera.cy_px, camera.height_px - 1.0}}) {
-    *field = ReadParam(nh, name, *field);
-    RequireParam(std::isfinite(*field) && *field >= 0.0 && *field <= limit, nh, name,
-                 "in [0, " + std::to_string(limit) + "] pixels (0: derived)", *field);
+  const CameraOptions& camera = o.world.sensors.camera;
+  for (const auto& [name, value, limit] : {std::tuple<const char*, double, double>{"camera/cx_px", camera.cx_px,
+                                                                                     camera.width_px - 1.0},
+                                           {"camera/cy_px", camera.cy_px, camera.height_px - 1.0}}) {
+    if (value > limit) {
+      throw ParameterError(source.Resolve(name) + " must be in [0, " + std::to_string(limit) +
+                           "] pixels (0: derived), got " + std::to_string(value));
+    }
   }
-
-  // The robot's start: the world's unless overridden (e.g. to start a localization run somewhere else).
-  Pose2D& start = o.world.start_pose;
-  start.x_m = ReadParam(nh, "start_x_m", start.x_m);
-  start.y_m = ReadParam(nh, "start_y_m", start.y_m);
-  const double start_theta_deg = ReadParam(nh, "start_theta_deg", start.theta_rad * 180.0 / M_PI);
-  for (const auto& [name, value] : {std::pair<const char*, double>{"start_x_m", start.x_m},
-                                    {"start_y_m", start.y_m}, {"start_theta_deg", start_theta_deg}}) {
-    RequireParam(std::isfinite(value), nh, name, "finite", value);
-  }
-  start.theta_rad = NormalizeAngle(start_theta_deg * M_PI / 180.0);
-
-  const int seed = ReadParam(nh, "seed", static_cast<int>(o.simulator.seed));
-  RequireParam(seed >= 0, nh, "seed", ">= 0", seed);
-  o.simulator.seed = static_cast<std::uint64_t>(seed);
-  o.simulator.physics_step_s = ReadParam(nh, "physics_step_s", o.simulator.physics_step_s);
-  RequireParam(o.simulator.physics_step_s > 0.0 && o.simulator.physics_step_s <= 0.1, nh, "physics_step_s",
-          "in (0, 0.1] seconds", o.simulator.physics_step_s);
-  o.simulator.max_linear_speed_mps = ReadParam(nh, "max_linear_speed_mps", o.simulator.max_linear_speed_mps);
-  RequireParam(o.simulator.max_linear_speed_mps > 0.0 && std::isfinite(o.simulator.max_linear_speed_mps), nh,
-          "max_linear_speed_mps", "finite and > 0", o.simulator.max_linear_speed_mps);
-  o.simulator.max_angular_speed_rps = ReadParam(nh, "max_angular_speed_rps", o.simulator.max_angular_speed_rps);
-  RequireParam(o.simulator.max_angular_speed_rps > 0.0 && std::isfinite(o.simulator.max_angular_speed_rps), nh,
-          "max_angular_speed_rps", "finite and > 0", o.simulator.max_angular_speed_rps);
-
-  o.real_time_factor = ReadParam(nh, "real_time_factor", o.real_time_factor);
-  RequireParam(o.real_time_factor >= 0.0 && std::isfinite(o.real_time_factor), nh, "real_time_factor",
-          "finite and >= 0 (0 = as fast as possible)", o.real_time_factor);
-  o.publish_clock = ReadParam(nh, "publish_clock", o.publish_clock);
-  o.cmd_vel_timeout_s = ReadParam(nh, "cmd_vel_timeout_s", o.cmd_vel_timeout_s);
-  RequireParam(o.cmd_vel_timeout_s > 0.0 && std::isfinite(o.cmd_vel_timeout_s), nh, "cmd_vel_timeout_s",
-          "finite and > 0 seconds", o.cmd_vel_timeout_s);
-  o.publish_ground_truth_tf = ReadParam(nh, "publish_ground_truth_tf", o.publish_ground_truth_tf);
-
-  o.odom_frame_id = ReadFrameParam(nh, "odom_frame_id", o.odom_frame_id);
-  o.base_frame_id = ReadFrameParam(nh, "base_frame_id", o.base_frame_id);
-  o.laser_frame_id = ReadFrameParam(nh, "laser_frame_id", o.laser_frame_id);
-  o.camera_body_frame_id = ReadFrameParam(nh, "camera_body_frame_id", o.camera_body_frame_id);
-  o.camera_frame_id = ReadFrameParam(nh, "camera_frame_id", o.camera_frame_id);
-  o.ground_truth_frame_id = ReadFrameParam(nh, "ground_truth_frame_id", o.ground_truth_frame_id);
   const std::set<std::string> frames{o.odom_frame_id, o.base_frame_id, o.laser_frame_id, o.camera_body_frame_id,
                                      o.camera_frame_id, o.ground_truth_frame_id};
   if (frames.size() != 6) {
-    throw ParameterError(nh.resolveName("") + ": the six *_frame_id parameters must all differ");
+    throw ParameterError(source.Resolve("") + ": the six *_frame_id parameters must all differ");
   }
-
   // The loader validates the world; the publishing schedule divides by these rates, so check them here too.
   const SensorOptions& sensors = o.world.sensors;
   for (const auto& [field, rate_hz] : {std::pair<const char*, double>{"laser.rate_hz", sensors.laser.rate_hz},
                                        {"odometry.rate_hz", sensors.odometry.rate_hz},
                                        {"camera.rate_hz", sensors.camera.rate_hz}}) {
     if (!(rate_hz > 0.0 && std::isfinite(rate_hz))) {
-      throw ParameterError(nh.resolveName("world") + " = '" + o.world_file + "': sensors." + field +
+      throw ParameterError(source.Resolve("world") + " = '" + o.world_file + "': sensors." + field +
                            " must be finite and > 0, got " + std::to_string(rate_hz));
     }
   }
   return o;
+}
+
+CorridorSimOptions LoadCorridorSimOptions(ros::NodeHandle& private_nh) {
+  return CorridorSimOptionsFrom(RosParamSource(private_nh));
 }
 
 }  // namespace doorplate_localization

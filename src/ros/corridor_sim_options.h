@@ -1,4 +1,5 @@
-// Parameters of CorridorSimNodelet, read and validated once from its private namespace.
+// Parameters of CorridorSimNodelet, read and validated once from its private namespace; one table
+// (CorridorSimParamTable) is the loader, the docs/parameters.md table and the config/sim.yaml check.
 #pragma once
 
 #include <stdexcept>
@@ -7,6 +8,7 @@
 #include <ros/node_handle.h>
 
 #include "doorplate_localization/ros/param_reader.h"
+#include "doorplate_localization/ros/param_table.h"
 
 #include "doorplate_localization/sim/simulator.h"
 #include "doorplate_localization/sim/world.h"
@@ -33,8 +35,14 @@ struct CorridorSimOptions {
   std::string ground_truth_frame_id = "map";              // the world frame
 };
 
-// Reads every parameter of `private_nh`, loads the world file and validates. Throws ParameterError
-// naming the parameter (e.g. "/corridor_sim/real_time_factor must be >= 0, got -1").
+// Every parameter: name, field, default (or the world's), rule, doc line.
+const ParamTable<CorridorSimOptions>& CorridorSimParamTable();
+
+// Loads the world file of ~world, then reads every parameter over it and validates. Throws ParameterError
+// naming the parameter (e.g. "/corridor_sim/real_time_factor must be finite and >= 0 ..., got -1"). ROS-free.
+CorridorSimOptions CorridorSimOptionsFrom(const ParamSource& source);
+
+// CorridorSimOptionsFrom(the parameters under `private_nh`).
 CorridorSimOptions LoadCorridorSimOptions(ros::NodeHandle& private_nh);
 
 }  // namespace doorplate_localization

@@ -84,16 +84,16 @@ class GoToRoomNodelet : public nodelet::Nodelet {
   // Plans the pending request with the map pose at `stamp` (0: latest), else eq. 15 from a recent reading.
   void TryPlan(const ros::Time& stamp) {
     std::string problem;
-    const std::optional<Pose2D> map_pose = LookupPose(options_.map_frame_id, stamp, &problem);
+    const std::optional<Pose2D> map_pose = LookupPose(options_.global_frame_id, stamp, &problem);
     RoomGoalResult result;
     if (map_pose) {
       result = planner_->Plan(*pending_, map_pose);
-      goal_frame_ = options_.map_frame_id;
+      goal_frame_ = options_.global_frame_id;
     } else if (reading_ && (ros::Time::now() - reading_->stamp).toSec() <= options_.reading_max_age_s) {
       result = PlanFromReading(*planner_, *pending_, reading_->plate);
       goal_frame_ = options_.odom_frame_id;
     } else {
-      const std::string waiting = "waiting_for_pose: room " + *pending_ + ": no tf " + options_.map_frame_id +
+      const std::string waiting = "waiting_for_pose: room " + *pending_ + ": no tf " + options_.global_frame_id +
                                   " -> " + options_.base_frame_id + " (" + problem + ")" +
                                   (options_.text_fallback ? " and no plate read recently" : "") + "; not driving";
       NODELET_WARN_THROTTLE(5.0, "%s", waiting.c_str());
@@ -237,7 +237,7 @@ class GoToRoomNodelet : public nodelet::Nodelet {
   ros::Timer watchdog_;
   std::mutex mutex_;
   std::optional<std::string> pending_;  // a request waiting for a pose
-  std::string goal_frame_;              // frame of the active goal: map_frame_id or odom_frame_id
+  std::string goal_frame_;              // frame of the active goal: global_frame_id or odom_frame_id
   std::optional<Reading> reading_;      // the last plate read (for eq. 15)
   ros::Time last_valid_scan_;
   std::string last_status_, last_state_;

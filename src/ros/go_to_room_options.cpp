@@ -1,103 +1,124 @@
+// GoToRoomNodelet's parameter table and loader: every parameter once (name, field, default, rule, doc);
+// rules between fields are the core's (GoToRoom, its WallFollowers, RoomGoalPlanner).
 #include "go_to_room_options.h"
 
-#include <cmath>
 #include <set>
 #include <string>
 
 namespace doorplate_localization {
-namespace {
 
-double ReadPositive(const ros::NodeHandle& nh, const std::string& name, double fallback) {
-  const double value = ReadParam(nh, name, fallback);
-  RequireParam(std::isfinite(value) && value > 0.0, nh, name, "finite and > 0", value);
-  return value;
+const ParamTable<GoToRoomNodeOptions>& GoToRoomParamTable() {
+  using O = GoToRoomNodeOptions;
+  namespace r = param_rules;
+  static const ParamTable<O> table = {
+      Param<O>("text_map_file", DOORPLATE_PARAM_FIELD(text_map_file),
+               "the doorplate text map (docs/text-map-format.md); unreadable, invalid or empty: the nodelet does "
+               "not start, naming it")
+          .DefaultText("(required)"),
+      Param<O>("duplicate_rule", DOORPLATE_PARAM_FIELD(planner.duplicate_rule),
+               "a room number on several plates: `nearest` (the plate closest to the robot; the log says which "
+               "plates there were) or `refuse` (asks for `<room>@<wall>`)",
+               r::OneOf({"nearest", "refuse"})),
+      Param<O>("wall_distance_m", DOORPLATE_PARAM_FIELD(controller.follower.wall_distance_m),
+               "as WallFollowerNodelet (the followed wall is the goal's: no `~wall_side`); also the goal's "
+               "distance from the plate's wall",
+               r::Positive()),
+      Param<O>("cruise_speed_mps", DOORPLATE_PARAM_FIELD(controller.follower.cruise_speed_mps),
+               "as WallFollowerNodelet", r::Positive()),
+      Param<O>("end_stop_distance_m", DOORPLATE_PARAM_FIELD(controller.follower.end_stop_distance_m),
+               "a wall or obstacle this close ahead before the goal: `failed` (plates near a corridor's end are "
+               "0.8 m from it)",
+               r::Positive())
+          .Shipped(0.45),
+      Param<O>("slow_down_distance_m", DOORPLATE_PARAM_FIELD(controller.follower.slow_down_distance_m),
+               "start slowing down when the wall ahead is this close; > end_stop_distance_m", r::Positive())
+          .Shipped(1.2),
+      Param<O>("distance_gain_rad_per_m", DOORPLATE_PARAM_FIELD(controller.follower.distance_gain_rad_per_m),
+               "as WallFollowerNodelet", r::Positive()),
+      Param<O>("max_heading_correction_rad", DOORPLATE_PARAM_FIELD(controller.follower.max_heading_correction_rad),
+               "as WallFollowerNodelet", r::Positive()),
+      Param<O>("heading_gain_per_s", DOORPLATE_PARAM_FIELD(controller.follower.heading_gain_per_s),
+               "as WallFollowerNodelet", r::Positive()),
+      Param<O>("max_angular_speed_rps", DOORPLATE_PARAM_FIELD(controller.follower.max_angular_speed_rps),
+               "as WallFollowerNodelet", r::Positive()),
+      Param<O>("side_max_range_m", DOORPLATE_PARAM_FIELD(controller.follower.side_max_range_m),
+               "as WallFollowerNodelet", r::Positive()),
+      Param<O>("front_half_width_m", DOORPLATE_PARAM_FIELD(controller.follower.front_half_width_m),
+               "as WallFollowerNodelet", r::Positive()),
+      Param<O>("approach_sector_max_deg", DOORPLATE_PARAM_FIELD(controller.approach_sector_max_deg),
+               "until the goal's wall is within `approach_tolerance_m` of `wall_distance_m`, fit it to the side "
+               "beams up to this angle only (beams further back reach the end wall)",
+               r::Positive()),
+      Param<O>("approach_tolerance_m", DOORPLATE_PARAM_FIELD(controller.approach_tolerance_m),
+               "see `approach_sector_max_deg`", r::Positive()),
+      Param<O>("turn_speed_rps", DOORPLATE_PARAM_FIELD(controller.turn_speed_rps),
+               "in-place turns: towards the goal, and to face the door", r::Positive()),
+      Param<O>("align_tolerance_rad", DOORPLATE_PARAM_FIELD(controller.align_tolerance_rad),
+               "a turn towards the goal ends within this of the travel direction; while driving, twice this off "
+               "turns again",
+               r::Positive()),
+      Param<O>("arrive_tolerance_m", DOORPLATE_PARAM_FIELD(controller.arrive_tolerance_m),
+               "stop this close to the goal along the corridor", r::Positive()),
+      Param<O>("approach_gain_per_s", DOORPLATE_PARAM_FIELD(controller.approach_gain_per_s),
+               "near the goal the speed is at most gain × remaining distance", r::Positive()),
+      Param<O>("min_approach_speed_mps", DOORPLATE_PARAM_FIELD(controller.min_approach_speed_mps),
+               "... and at least this; <= cruise_speed_mps", r::Positive()),
+      Param<O>("face_gain_per_s", DOORPLATE_PARAM_FIELD(controller.face_gain_per_s),
+               "turning to face the door: angular speed = gain × yaw error", r::Positive()),
+      Param<O>("face_tolerance_rad", DOORPLATE_PARAM_FIELD(controller.face_tolerance_rad),
+               "`arrived` within this yaw error", r::Positive()),
+      Param<O>("global_frame_id", DOORPLATE_PARAM_FIELD(global_frame_id),
+               "the localizer's frame (amcl's name): the pose is tf `global_frame_id → base_frame_id`",
+               r::FrameId())
+          .Deprecated("map_frame_id"),
+      Param<O>("odom_frame_id", DOORPLATE_PARAM_FIELD(odom_frame_id), "the eq. 15 fallback drives in this frame",
+               r::FrameId()),
+      Param<O>("base_frame_id", DOORPLATE_PARAM_FIELD(base_frame_id), "the robot's frame; the three frames differ",
+               r::FrameId()),
+      Param<O>("scan_timeout_s", DOORPLATE_PARAM_FIELD(scan_timeout_s),
+               "no valid scan for this long while driving: publish a stop", r::Positive()),
+      Param<O>("tf_timeout_s", DOORPLATE_PARAM_FIELD(tf_timeout_s), "wait this long for a tf at a message's stamp",
+               r::NonNegative()),
+      Param<O>("text_fallback", DOORPLATE_PARAM_FIELD(text_fallback),
+               "subscribe `text_detections` and use eq. 15 while there is no map pose"),
+      Param<O>("reading_max_age_s", DOORPLATE_PARAM_FIELD(reading_max_age_s),
+               "an older plate reading is not used for eq. 15", r::Positive()),
+  };
+  return table;
 }
 
-void LoadFollower(const ros::NodeHandle& nh, WallFollowerOptions* f) {
-  if (nh.hasParam("wall_side")) {
-    throw ParameterError(nh.resolveName("wall_side") +
+GoToRoomNodeOptions GoToRoomOptionsFrom(const ParamSource& source) {
+  const ParamTable<GoToRoomNodeOptions>& table = GoToRoomParamTable();
+  if (source.Has("wall_side")) {
+    throw ParameterError(source.Resolve("wall_side") +
                          " is not a go-to-room parameter: the robot follows the wall of the goal's plate");
   }
-  f->wall_distance_m = ReadPositive(nh, "wall_distance_m", f->wall_distance_m);
-  f->cruise_speed_mps = ReadPositive(nh, "cruise_speed_mps", f->cruise_speed_mps);
-  f->end_stop_distance_m = ReadPositive(nh, "end_stop_distance_m", f->end_stop_distance_m);
-  f->slow_down_distance_m = ReadPositive(nh, "slow_down_distance_m", f->slow_down_distance_m);
-  RequireParam(f->slow_down_distance_m > f->end_stop_distance_m, nh, "slow_down_distance_m",
-               "> end_stop_distance_m", f->slow_down_distance_m);
-  f->distance_gain_rad_per_m = ReadPositive(nh, "distance_gain_rad_per_m", f->distance_gain_rad_per_m);
-  f->max_heading_correction_rad = ReadPositive(nh, "max_heading_correction_rad", f->max_heading_correction_rad);
-  f->heading_gain_per_s = ReadPositive(nh, "heading_gain_per_s", f->heading_gain_per_s);
-  f->max_angular_speed_rps = ReadPositive(nh, "max_angular_speed_rps", f->max_angular_speed_rps);
-  f->side_max_range_m = ReadPositive(nh, "side_max_range_m", f->side_max_range_m);
-  RequireParam(f->side_max_range_m > f->wall_distance_m, nh, "side_max_range_m", "> wall_distance_m",
-               f->side_max_range_m);
-  f->front_half_width_m = ReadPositive(nh, "front_half_width_m", f->front_half_width_m);
-}
-
-void LoadController(const ros::NodeHandle& nh, GoToRoomOptions* c) {
-  c->approach_sector_max_deg = ReadPositive(nh, "approach_sector_max_deg", c->approach_sector_max_deg);
-  RequireParam(c->approach_sector_max_deg > c->follower.side_sector_min_deg && c->approach_sector_max_deg <= 180.0, nh,
-               "approach_sector_max_deg", "in (side_sector_min_deg = " + std::to_string(c->follower.side_sector_min_deg) +
-               ", 180]", c->approach_sector_max_deg);
-  c->approach_tolerance_m = ReadPositive(nh, "approach_tolerance_m", c->approach_tolerance_m);
-  c->turn_speed_rps = ReadPositive(nh, "turn_speed_rps", c->turn_speed_rps);
-  c->align_tolerance_rad = ReadPositive(nh, "align_tolerance_rad", c->align_tolerance_rad);
-  RequireParam(c->align_tolerance_rad < M_PI / 2, nh, "align_tolerance_rad", "in (0, pi/2)", c->align_tolerance_rad);
-  c->arrive_tolerance_m = ReadPositive(nh, "arrive_tolerance_m", c->arrive_tolerance_m);
-  c->approach_gain_per_s = ReadPositive(nh, "approach_gain_per_s", c->approach_gain_per_s);
-  c->min_approach_speed_mps = ReadPositive(nh, "min_approach_speed_mps", c->min_approach_speed_mps);
-  RequireParam(c->min_approach_speed_mps <= c->follower.cruise_speed_mps, nh, "min_approach_speed_mps",
-               "<= cruise_speed_mps", c->min_approach_speed_mps);
-  c->face_gain_per_s = ReadPositive(nh, "face_gain_per_s", c->face_gain_per_s);
-  c->face_tolerance_rad = ReadPositive(nh, "face_tolerance_rad", c->face_tolerance_rad);
-  RequireParam(c->face_tolerance_rad < M_PI / 2, nh, "face_tolerance_rad", "in (0, pi/2)", c->face_tolerance_rad);
-}
-
-}  // namespace
-
-GoToRoomNodeOptions LoadGoToRoomOptions(const ros::NodeHandle& nh) {
   GoToRoomNodeOptions o;
-  o.text_map_file = ReadParam(nh, "text_map_file", std::string());
+  ApplyParamTable(table, source, &o);
   if (o.text_map_file.empty()) {
-    throw ParameterError(nh.resolveName("text_map_file") +
+    throw ParameterError(source.Resolve("text_map_file") +
                          " is required: the doorplate text map (docs/text-map-format.md), e.g. maps/x.text_map.yaml");
   }
   try {
     o.text_map = LoadTextMap(o.text_map_file);
   } catch (const std::exception& e) {  // TextMapError names the file and field
-    throw ParameterError(nh.resolveName("text_map_file") + " = '" + o.text_map_file + "' cannot be used: " + e.what());
+    throw ParameterError(source.Resolve("text_map_file") + " = '" + o.text_map_file + "' cannot be used: " + e.what());
   }
   if (o.text_map.landmarks.empty()) {
-    throw ParameterError(nh.resolveName("text_map_file") + " = '" + o.text_map_file +
+    throw ParameterError(source.Resolve("text_map_file") + " = '" + o.text_map_file +
                          "' has no landmarks: no room can be reached");
   }
-  o.planner.duplicate_rule = ReadParam(nh, "duplicate_rule", o.planner.duplicate_rule);
-  RequireParam(o.planner.duplicate_rule == "nearest" || o.planner.duplicate_rule == "refuse", nh, "duplicate_rule",
-               "'nearest' or 'refuse'", o.planner.duplicate_rule);
-  LoadFollower(nh, &o.controller.follower);
-  o.planner.wall_distance_m = o.controller.follower.wall_distance_m;
-  LoadController(nh, &o.controller);
-
-  o.map_frame_id = ReadFrameParam(nh, "map_frame_id", o.map_frame_id);
-  o.odom_frame_id = ReadFrameParam(nh, "odom_frame_id", o.odom_frame_id);
-  o.base_frame_id = ReadFrameParam(nh, "base_frame_id", o.base_frame_id);
-  if (std::set<std::string>{o.map_frame_id, o.odom_frame_id, o.base_frame_id}.size() != 3) {
-    throw ParameterError(nh.resolveName("") + ": map_frame_id, odom_frame_id and base_frame_id must all differ");
+  o.planner.wall_distance_m = o.controller.follower.wall_distance_m;  // the goal is where the following ends
+  if (std::set<std::string>{o.global_frame_id, o.odom_frame_id, o.base_frame_id}.size() != 3) {
+    throw ParameterError(source.Resolve("") + ": global_frame_id, odom_frame_id and base_frame_id must all differ");
   }
-  o.scan_timeout_s = ReadPositive(nh, "scan_timeout_s", o.scan_timeout_s);
-  o.tf_timeout_s = ReadParam(nh, "tf_timeout_s", o.tf_timeout_s);
-  RequireParam(std::isfinite(o.tf_timeout_s) && o.tf_timeout_s >= 0.0, nh, "tf_timeout_s", "finite and >= 0",
-               o.tf_timeout_s);
-  o.text_fallback = ReadParam(nh, "text_fallback", o.text_fallback);
-  o.reading_max_age_s = ReadPositive(nh, "reading_max_age_s", o.reading_max_age_s);
-  // The core's own checks (e.g. the follower's), named by their struct field.
-  try {
-    GoToRoom check(o.controller);
-    RoomGoalPlanner planner_check(o.planner, TextMap{}, o.text_map_file);
-  } catch (const std::invalid_argument& e) {
-    throw ParameterError(nh.resolveName("") + ": " + e.what());
-  }
+  CheckWithCore(table, o, source, [&o] {
+    (void)GoToRoom(o.controller);
+    (void)RoomGoalPlanner(o.planner, TextMap{}, o.text_map_file);
+  });
   return o;
 }
+
+GoToRoomNodeOptions LoadGoToRoomOptions(const ros::NodeHandle& nh) { return GoToRoomOptionsFrom(RosParamSource(nh)); }
 
 }  // namespace doorplate_localization

@@ -1,4 +1,5 @@
-// Parameters of GoToRoomNodelet, read and validated once from its private namespace (docs/parameters.md).
+// Parameters of GoToRoomNodelet, read and validated once from its private namespace; one table
+// (GoToRoomParamTable) is the loader, the docs/parameters.md table and the config/go_to_room.yaml check.
 #pragma once
 
 #include <string>
@@ -9,6 +10,7 @@
 #include "doorplate_localization/behaviour/room_goal_planner.h"
 #include "doorplate_localization/maps/text_map.h"
 #include "doorplate_localization/ros/param_reader.h"
+#include "doorplate_localization/ros/param_table.h"
 
 namespace doorplate_localization {
 
@@ -23,7 +25,8 @@ struct GoToRoomNodeOptions {
   // parameters under the same names (~wall_distance_m, ~cruise_speed_mps, ...; no ~wall_side: the goal's
   // wall is followed).
   GoToRoomOptions controller;
-  std::string map_frame_id = "map";        // the localizer's frame: pose = tf map -> base_link
+  // The localizer's frame: pose = tf map -> base_link (~global_frame_id, amcl's name; ~map_frame_id deprecated).
+  std::string global_frame_id = "map";
   std::string odom_frame_id = "odom";      // the eq. 15 fallback drives in this frame
   std::string base_frame_id = "base_link";
   double scan_timeout_s = 0.5;             // no valid scan for this long (ROS time) while driving: stop
@@ -32,8 +35,15 @@ struct GoToRoomNodeOptions {
   double reading_max_age_s = 60.0;         // a plate read longer ago than this is not used for eq. 15
 };
 
-// Throws ParameterError naming the parameter, e.g. "/go_to_room/text_map_file = 'x.yaml' cannot be used:
-// x.yaml: cannot open ...", "/go_to_room/duplicate_rule must be 'nearest' or 'refuse', got first".
+// Every parameter: name, field, default, rule, doc line.
+const ParamTable<GoToRoomNodeOptions>& GoToRoomParamTable();
+
+// The options from `source` over the defaults, the text map loaded, checked by the core. Throws
+// ParameterError naming the parameter, e.g. "/go_to_room/text_map_file = 'x.yaml' cannot be used: x.yaml:
+// cannot open ...", "/go_to_room/duplicate_rule must be 'nearest' or 'refuse', got first". ROS-free.
+GoToRoomNodeOptions GoToRoomOptionsFrom(const ParamSource& source);
+
+// GoToRoomOptionsFrom(the parameters under `private_nh`).
 GoToRoomNodeOptions LoadGoToRoomOptions(const ros::NodeHandle& private_nh);
 
 }  // namespace doorplate_localization

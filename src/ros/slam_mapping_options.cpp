@@ -1,3 +1,7 @@
+// SlamMappingNodelet's parameter table and loader. The table holds gmapping's names (with gmapping's
+// defaults) and our node's own parameters; every option of the SLAM core is also a parameter under its name
+// in the core's option table (TextSlamOptionNames, shared with the offline tools), read after the table.
+// Rules between fields are the core's (TextSlam's constructor).
 #include "slam_mapping_options.h"
 
 #include <cmath>
@@ -10,27 +14,30 @@
 namespace doorplate_localization {
 namespace {
 
+using O = SlamMappingNodeOptions;
+
 // A gmapping parameter that is the same option as a core one.
 struct GmappingAlias {
   const char* gmapping;
   const char* core;     // name in TextSlamOptionNames()
   double gmapping_default;
+  const char* doc;
 };
 
 // gmapping's defaults (slam_gmapping.cpp / ROS wiki). srr..stt: gmapping's odometry noise coefficients
 // (translation per translation, translation per rotation, rotation per translation, rotation per
 // rotation) are our motion model's standard deviations per metre / radian (motion_model.h).
 const GmappingAlias kAliases[] = {
-    {"particles", "num_particles", 30},
-    {"linearUpdate", "linear_update_m", 1.0},
-    {"angularUpdate", "angular_update_rad", 0.5},
-    {"resampleThreshold", "resample_neff_ratio", 0.5},
-    {"maxUrange", "max_usable_range_m", 80.0},
-    {"delta", "grid.resolution_m", 0.05},
-    {"srr", "motion.trans_stddev_m_per_m", 0.1},
-    {"srt", "motion.trans_stddev_m_per_rad", 0.2},
-    {"str", "motion.rot_stddev_rad_per_m", 0.1},
-    {"stt", "motion.rot_stddev_rad_per_rad", 0.2},
+    {"particles", "num_particles", 30, "particles"},
+    {"linearUpdate", "linear_update_m", 1.0, "process a scan after driving this far (m)..."},
+    {"angularUpdate", "angular_update_rad", 0.5, "...or turning this much (rad)"},
+    {"resampleThreshold", "resample_neff_ratio", 0.5, "resample when Neff < this × particles"},
+    {"maxUrange", "max_usable_range_m", 80.0, "longer beams only clear free space (m)"},
+    {"delta", "grid.resolution_m", 0.05, "map cell size (m)"},
+    {"srr", "motion.trans_stddev_m_per_m", 0.1, "odometry translation noise per metre driven"},
+    {"srt", "motion.trans_stddev_m_per_rad", 0.2, "odometry translation noise per radian turned"},
+    {"str", "motion.rot_stddev_rad_per_m", 0.1, "odometry rotation noise per metre driven"},
+    {"stt", "motion.rot_stddev_rad_per_rad", 0.2, "odometry rotation noise per radian turned"},
 };
 
 // gmapping parameters without a counterpart (its scan matcher and likelihood are built differently, our
@@ -39,40 +46,6 @@ const char* const kIgnoredGmapping[] = {
     "sigma", "kernelSize", "lstep", "astep", "iterations", "lsigma", "ogain", "lskip", "minimumScore",
     "llsamplerange", "llsamplestep", "lasamplerange", "lasamplestep", "xmin", "ymin", "xmax", "ymax",
     "temporalUpdate", "occ_thresh", "tf_delay"};
-
-double ReadFinite(const ros::NodeHandle& nh, const std::string& name, double fallback) {
-  const double value = ReadParam(nh, name, fallback);
-  RequireParam(std::isfinite(value), nh, name, "finite", value);
-  return value;
-}
-
-void ReadCoreOptions(const ros::NodeHandle& nh, TextSlamOptions* slam) {
-  // gmapping's defaults for its names, unless the core name is set instead.
-  for (const GmappingAlias& a : kAliases) {
-    const std::string core_param = SlamOptionParamName(a.core);
-    if (nh.hasParam(a.gmapping) && nh.hasParam(core_param)) {
-      throw ParameterError(nh.resolveName(a.gmapping) + " and " + nh.resolveName(core_param) +
-                           " are the same option: set only one");
-    }
-    if (nh.hasParam(core_param)) continue;  // read below with the other core names
-    const double value = ReadFinite(nh, a.gmapping, a.gmapping_default);
-    try {
-      SetTextSlamOption(a.core, value, slam);
-    } catch (const std::invalid_argument& e) {
-      throw ParameterError(nh.resolveName(a.gmapping) + ": " + e.what());
-    }
-  }
-  for (const std::string& name : TextSlamOptionNames()) {
-    const std::string param = SlamOptionParamName(name);
-    if (!nh.hasParam(param)) continue;
-    const double value = ReadFinite(nh, param, 0.0);
-    try {
-      SetTextSlamOption(name, value, slam);
-    } catch (const std::invalid_argument& e) {
-      throw ParameterError(nh.resolveName(param) + ": " + e.what());
-    }
-  }
-}
 
 std::string DefaultOutputDir() {
   if (const char* ros_home = std::getenv("ROS_HOME"); ros_home != nullptr && *ros_home != '\0') {
@@ -84,6 +57,12 @@ std::string DefaultOutputDir() {
 
 }  // namespace
 
+TextSlamOptions GmappingDefaultSlamOptions() {
+  TextSlamOptions slam;
+  for (const GmappingAlias& a : kAliases) SetTextSlamOption(a.core, a.gmapping_default, &slam);
+  return slam;
+}
+
 std::string SlamOptionParamName(const std::string& option_name) {
   std::string param = option_name;
   for (char& c : param) {
@@ -92,58 +71,112 @@ std::string SlamOptionParamName(const std::string& option_name) {
   return param;
 }
 
-SlamMappingNodeOptions LoadSlamMappingOptions(const ros::NodeHandle& nh) {
-  SlamMappingNodeOptions o;
-  ReadCoreOptions(nh, &o.slam);
-  const int seed = ReadParam(nh, "seed", static_cast<int>(o.slam.slam.seed));
-  RequireParam(seed >= 0, nh, "seed", ">= 0", seed);
-  o.slam.slam.seed = static_cast<std::uint64_t>(seed);
-  try {
-    TextSlam check(o.slam);  // the core validates its own ranges; its message names the field
-  } catch (const std::invalid_argument& e) {
-    throw ParameterError(nh.resolveName("") + ": invalid SLAM options: " + e.what() +
-                         " (parameter ~<field path with / for .>, or its gmapping name)");
-  }
+const ParamTable<O>& SlamMappingParamTable() {
+  namespace r = param_rules;
+  static const ParamTable<O> table = [] {
+    ParamTable<O> t;
+    const TextSlamOptions core;
+    for (const GmappingAlias& a : kAliases) {
+      const std::string name = a.core;
+      t.push_back(ConvertedParam<O, double>(
+                      a.gmapping, "slam." + name, [name](const O& o) { return GetTextSlamOption(name, o.slam); },
+                      [name](O& o, double v) { SetTextSlamOption(name, v, &o.slam); },
+                      std::string("= core option `") + SlamOptionParamName(name) + "`: " + a.doc, r::Finite())
+                      .Shipped(GetTextSlamOption(name, core)));  // config/mapping.yaml: the core's defaults
+    }
+    const ParamTable<O> rest = {
+        Param<O>("maxRange", DOORPLATE_PARAM_FIELD(max_range_m),
+                 "readings >= this are no echo (free space up to `no_return_clear_range_m`); 0 = the scan's "
+                 "`range_max`",
+                 r::NonNegative()),
+        Param<O>("map_update_interval", DOORPLATE_PARAM_FIELD(map_update_interval_s),
+                 "seconds (ROS time) between publications of `map` / `map_metadata`", r::Positive()),
+        Param<O>("transform_publish_period", DOORPLATE_PARAM_FIELD(transform_publish_period_s),
+                 "seconds between `map → odom` broadcasts (0 = none); each is future-dated by one period",
+                 r::NonNegative()),
+        Param<O>("throttle_scans", DOORPLATE_PARAM_FIELD(throttle_scans), "use every n-th scan", r::AtLeast(1)),
+        Param<O>("base_frame", DOORPLATE_PARAM_FIELD(base_frame), "the robot's frame (gmapping's name)", r::FrameId()),
+        Param<O>("odom_frame", DOORPLATE_PARAM_FIELD(odom_frame), "odometry frame (gmapping's name)", r::FrameId()),
+        Param<O>("map_frame", DOORPLATE_PARAM_FIELD(map_frame), "map frame (gmapping's name); the three differ",
+                 r::FrameId()),
+        ConvertedParam<O, int>(
+            "seed", "slam.slam.seed", [](const O& o) { return static_cast<int>(o.slam.slam.seed); },
+            [](O& o, int seed) { o.slam.slam.seed = static_cast<std::uint64_t>(seed); },
+            "(ours) the filter's random seed", r::AtLeast(0)),
+        Param<O>("use_text", DOORPLATE_PARAM_FIELD(use_text), "(ours) subscribe `text_detections` and map the plates"),
+        Param<O>("room_pattern", DOORPLATE_PARAM_FIELD(slam.room_pattern),
+                 "(ours) the building's room identifier format, an ECMAScript regex (the text extractor's "
+                 "parameter of the same name): plates whose canonical text does not fit are not mapped; written "
+                 "as the saved text map's `room_pattern`"),
+        Param<O>("min_valid_beams", DOORPLATE_PARAM_FIELD(min_valid_beams),
+                 "(ours) scans with fewer finite returns are dropped (warning)", r::AtLeast(1)),
+        Param<O>("tf_timeout_s", DOORPLATE_PARAM_FIELD(tf_timeout_s),
+                 "(ours) wait at most this for a tf at a scan's or detection's stamp",
+                 r::Holds("in [0, 10] seconds", [](double v) { return v >= 0.0 && v <= 10.0; })),
+        Param<O>("map_output_dir", DOORPLATE_PARAM_FIELD(map_output_dir),
+                 "(ours) folder of `~save_maps` and the save at shutdown; \"\" = `$ROS_HOME/doorplate_maps` "
+                 "(`~/.ros/doorplate_maps`)"),
+        Param<O>("map_name", DOORPLATE_PARAM_FIELD(map_name),
+                 "(ours) files `<dir>/<name>.pgm`, `<name>.yaml` (map_server), `<name>.text_map.yaml`",
+                 {"a non-empty file name without '/'",
+                  [](const ParamValue& v) {
+                    const std::string& n = std::get<std::string>(v);
+                    return !n.empty() && n.find('/') == std::string::npos;
+                  }}),
+        Param<O>("save_on_shutdown", DOORPLATE_PARAM_FIELD(save_on_shutdown),
+                 "(ours) write the maps when the nodelet is unloaded or the manager exits"),
+    };
+    t.insert(t.end(), rest.begin(), rest.end());
+    return t;
+  }();
+  return table;
+}
 
-  o.base_frame = ReadFrameParam(nh, "base_frame", o.base_frame);
-  o.odom_frame = ReadFrameParam(nh, "odom_frame", o.odom_frame);
-  o.map_frame = ReadFrameParam(nh, "map_frame", o.map_frame);
-  if (o.base_frame == o.odom_frame || o.odom_frame == o.map_frame || o.base_frame == o.map_frame) {
-    throw ParameterError(nh.resolveName("") + ": base_frame, odom_frame and map_frame must all differ");
+SlamMappingNodeOptions SlamMappingOptionsFrom(const ParamSource& source) {
+  const ParamTable<O>& table = SlamMappingParamTable();
+  for (const GmappingAlias& a : kAliases) {
+    const std::string core_param = SlamOptionParamName(a.core);
+    if (source.Has(a.gmapping) && source.Has(core_param)) {
+      throw ParameterError(source.Resolve(a.gmapping) + " and " + source.Resolve(core_param) +
+                           " are the same option: set only one");
+    }
   }
-  o.map_update_interval_s = ReadFinite(nh, "map_update_interval", o.map_update_interval_s);
-  RequireParam(o.map_update_interval_s > 0.0, nh, "map_update_interval", "> 0 seconds", o.map_update_interval_s);
-  o.transform_publish_period_s = ReadFinite(nh, "transform_publish_period", o.transform_publish_period_s);
-  RequireParam(o.transform_publish_period_s >= 0.0, nh, "transform_publish_period", ">= 0 seconds (0 = off)",
-               o.transform_publish_period_s);
-  o.max_range_m = ReadFinite(nh, "maxRange", o.max_range_m);
-  RequireParam(o.max_range_m >= 0.0, nh, "maxRange", ">= 0 (0 = the scan's range_max)", o.max_range_m);
-  o.throttle_scans = ReadParam(nh, "throttle_scans", o.throttle_scans);
-  RequireParam(o.throttle_scans >= 1, nh, "throttle_scans", ">= 1", o.throttle_scans);
-  o.min_valid_beams = ReadParam(nh, "min_valid_beams", o.min_valid_beams);
-  RequireParam(o.min_valid_beams >= 1, nh, "min_valid_beams", ">= 1", o.min_valid_beams);
-  o.tf_timeout_s = ReadFinite(nh, "tf_timeout_s", o.tf_timeout_s);
-  RequireParam(o.tf_timeout_s >= 0.0 && o.tf_timeout_s <= 10.0, nh, "tf_timeout_s", "in [0, 10] seconds",
-               o.tf_timeout_s);
-  o.use_text = ReadParam(nh, "use_text", o.use_text);
-  o.slam.room_pattern = ReadParam(nh, "room_pattern", o.slam.room_pattern);
+  O o;
+  ApplyParamTable(table, source, &o);
+  // Every core option by its table name (a gmapping name's core name included: it replaces gmapping's default).
+  for (const std::string& name : TextSlamOptionNames()) {
+    const std::string param = SlamOptionParamName(name);
+    const std::optional<ParamValue> value = source.Get(param, 0.0);
+    if (!value) continue;
+    const double v = std::get<double>(*value);
+    if (!std::isfinite(v)) throw ParameterError(source.Resolve(param) + " must be finite, got " + FormatParamValue(v));
+    try {
+      SetTextSlamOption(name, v, &o.slam);
+    } catch (const std::invalid_argument& e) {
+      throw ParameterError(source.Resolve(param) + ": " + e.what());
+    }
+  }
+  if (o.base_frame == o.odom_frame || o.odom_frame == o.map_frame || o.base_frame == o.map_frame) {
+    throw ParameterError(source.Resolve("") + ": base_frame, odom_frame and map_frame must all differ");
+  }
   try {
     RoomIdGrammar check(o.slam.room_pattern);
   } catch (const std::invalid_argument& e) {
-    throw ParameterError(nh.resolveName("room_pattern") + " must be an ECMAScript regex of the building's room "
+    throw ParameterError(source.Resolve("room_pattern") + " must be an ECMAScript regex of the building's room "
                          "numbers (canonical form, docs/text-map-format.md), got '" + o.slam.room_pattern + "': " +
                          e.what());
   }
-  o.map_output_dir = ReadParam(nh, "map_output_dir", o.map_output_dir);
+  // The core validates its own ranges; its message names the field (and so the gmapping name, if it has one).
+  CheckWithCore(table, o, source, [&o] { (void)TextSlam(o.slam); });
   if (o.map_output_dir.empty()) o.map_output_dir = DefaultOutputDir();
-  o.map_name = ReadParam(nh, "map_name", o.map_name);
-  RequireParam(!o.map_name.empty() && o.map_name.find('/') == std::string::npos, nh, "map_name",
-               "a non-empty file name without '/'", o.map_name);
-  o.save_on_shutdown = ReadParam(nh, "save_on_shutdown", o.save_on_shutdown);
   for (const char* name : kIgnoredGmapping) {
-    if (nh.hasParam(name)) o.ignored_parameters.push_back(nh.resolveName(name));
+    if (source.Has(name)) o.ignored_parameters.push_back(source.Resolve(name));
   }
   return o;
+}
+
+SlamMappingNodeOptions LoadSlamMappingOptions(const ros::NodeHandle& nh) {
+  return SlamMappingOptionsFrom(RosParamSource(nh));
 }
 
 }  // namespace doorplate_localization

@@ -10,6 +10,8 @@
 //    parameter name as the text extractor's.
 // A gmapping name and its core name are the same option: setting both is an error. gmapping parameters
 // that have no counterpart here (sigma, lstep, ogain, xmin, ...) are reported in `ignored_parameters`.
+// One table (SlamMappingParamTable: gmapping's names and ours) is the loader, the docs/parameters.md table
+// and the config/mapping.yaml check; the core's names come from the core's own option table.
 #pragma once
 
 #include <string>
@@ -18,12 +20,16 @@
 #include <ros/node_handle.h>
 
 #include "doorplate_localization/ros/param_reader.h"
+#include "doorplate_localization/ros/param_table.h"
 #include "doorplate_localization/slam/text_slam.h"
 
 namespace doorplate_localization {
 
+// The core's options with gmapping's defaults for gmapping's names (particles 30, linearUpdate 1.0, ...).
+TextSlamOptions GmappingDefaultSlamOptions();
+
 struct SlamMappingNodeOptions {
-  TextSlamOptions slam;                     // the core's options (gmapping names mapped onto them);
+  TextSlamOptions slam = GmappingDefaultSlamOptions();  // the core's options (gmapping names mapped onto them);
                                             // slam.room_pattern is ~room_pattern (written into the text map)
   std::string base_frame = "base_link";     // ~base_frame
   std::string odom_frame = "odom";          // ~odom_frame
@@ -41,8 +47,15 @@ struct SlamMappingNodeOptions {
   std::vector<std::string> ignored_parameters;  // gmapping parameters set but not used (warned at start)
 };
 
-// Throws ParameterError naming the resolved parameter ("/slam_mapping/particles must be an integer >= 1,
-// got 0", "/slam_mapping/matcher/field_sigma_m: TiledGrid...: must be > 0").
+// Every parameter of the table: name, field, default, rule, doc line.
+const ParamTable<SlamMappingNodeOptions>& SlamMappingParamTable();
+
+// The options from `source`: the table, then the core's option names, checked by the core. Throws
+// ParameterError naming the resolved parameter ("/slam_mapping/throttle_scans must be >= 1, got 0",
+// "/slam_mapping/particles = 0.0: refused by the core options: ..."). ROS-free.
+SlamMappingNodeOptions SlamMappingOptionsFrom(const ParamSource& source);
+
+// SlamMappingOptionsFrom(the parameters under `private_nh`).
 SlamMappingNodeOptions LoadSlamMappingOptions(const ros::NodeHandle& private_nh);
 
 // The ROS parameter name of a core option name: "matcher.field_sigma_m" -> "matcher/field_sigma_m".

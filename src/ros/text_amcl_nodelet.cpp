@@ -96,7 +96,7 @@ class TextAmclNodelet : public nodelet::Nodelet {
 
   // ~text_map_file: missing or broken -> an error naming the file; the filter runs on the laser alone.
   void LoadTextMapFile() {
-    if (!options_.setup.use_text) return;
+    if (!options_.session.setup.use_text) return;
     if (options_.text_map_file.empty()) {
       NODELET_WARN("%s is not set: localizing with the laser alone",
                    getPrivateNodeHandle().resolveName("text_map_file").c_str());
@@ -122,12 +122,12 @@ class TextAmclNodelet : public nodelet::Nodelet {
   bool UseMap(const OccupancyGrid& grid, const std::string& source) {
     std::unique_ptr<TextAmclSession> session;  // the running session stays if the new map cannot be used
     try {
-      session = std::make_unique<TextAmclSession>(ToSessionOptions(options_), grid, text_map_);
+      session = std::make_unique<TextAmclSession>(options_.session, grid, text_map_);
     } catch (const std::invalid_argument& e) {
       std::string problem = e.what();
       if (text_map_) {  // the map, or the text map with it? Without the text map:
         try {
-          session = std::make_unique<TextAmclSession>(ToSessionOptions(options_), grid, nullptr);
+          session = std::make_unique<TextAmclSession>(options_.session, grid, nullptr);
           NODELET_ERROR("%s cannot be used with the map from %s: %s; localizing with the laser alone",
                         options_.text_map_file.c_str(), source.c_str(), problem.c_str());
           text_map_.reset();
@@ -143,9 +143,9 @@ class TextAmclNodelet : public nodelet::Nodelet {
     }
     session_ = std::move(session);
     NODELET_INFO("text amcl: map %dx%d at %.3f m from %s, %s laser model, %s; %d particles %s", grid.width,
-                 grid.height, grid.resolution_m, source.c_str(), ToString(options_.setup.laser_model_type),
-                 text_map_ ? "with doorplates" : "laser only", options_.setup.filter.max_particles,
-                 options_.start_with_global_localization ? "over the free space" : "at ~initial_pose_*");
+                 grid.height, grid.resolution_m, source.c_str(), ToString(options_.session.setup.laser_model_type),
+                 text_map_ ? "with doorplates" : "laser only", options_.session.setup.filter.max_particles,
+                 options_.session.start_with_global_localization ? "over the free space" : "at ~initial_pose_*");
     PublishFilter(ros::Time::now(), /*force_cloud=*/true);
     return true;
   }
@@ -193,8 +193,8 @@ class TextAmclNodelet : public nodelet::Nodelet {
       res.success = false;
       return true;
     }
-    options_.initial_pose = mean;
-    options_.initial_covariance = covariance;
+    options_.session.initial_pose = mean;
+    options_.session.initial_covariance = covariance;
     res.success = UseMap(grid, set_map_srv_.getService());
     return true;
   }
@@ -226,8 +226,8 @@ class TextAmclNodelet : public nodelet::Nodelet {
       NODELET_WARN_THROTTLE(2.0, "%s: %s; ignored", initial_pose_sub_.getTopic().c_str(), problem.c_str());
       return;
     }
-    options_.initial_pose = mean;  // also the start pose on the next map
-    options_.initial_covariance = covariance;
+    options_.session.initial_pose = mean;  // also the start pose on the next map
+    options_.session.initial_covariance = covariance;
     if (!session_) return;
     session_->Initialize(mean, covariance);
     NODELET_INFO("text amcl: initial pose (%.3f, %.3f, %.3f)", mean.x_m, mean.y_m, mean.theta_rad);

@@ -1,11 +1,12 @@
 // WallFollowerNodelet: corridor following with the laser (paper Sec. 3.2-3.4) as a thin nodelet over
-// WallFollower (~mode follow), CorridorSweep (~mode sweep / patrol) or FloorExplorer (~mode explore: a
-// whole floor); sweep, patrol and explore also need tf odom→base_link to measure turns and distance.
+// WallFollower (~mode follow), CorridorSweep (~mode sweep / patrol), FloorExplorer (~mode explore: a
+// whole floor) or ContourSteering (~mode roam: one wall of a floor, for ever); sweep, patrol and explore
+// also need tf odom→base_link to measure turns and distance.
 // Subscribes scan (sensor_msgs/LaserScan, any frame with a tf to base_link) and, in explore mode,
 // text_detections (TextDetectionArray: its plate reports end the passes); publishes cmd_vel
 // (geometry_msgs/Twist), ~state (std_msgs/String, latched: follow mode following | no_wall |
 // end_reached; sweep modes follow_out | turn_around | follow_back | done; explore pass_<n> |
-// turn_around | done; any mode disabled | no_valid_scan) and ~corridor_width (std_msgs/Float32, metres,
+// turn_around | done; roam roaming | no_wall; any mode disabled | no_valid_scan) and ~corridor_width (std_msgs/Float32, metres,
 // when both walls are seen; follow and sweep modes).
 // Service ~enable (std_srvs/SetBool) starts and stops driving. Parameters: wall_follower_options.h.
 #include <mutex>
@@ -41,6 +42,7 @@ class WallFollowerNodelet : public nodelet::Nodelet {
         sweep_ = std::make_unique<CorridorSweep>(options_.sweep);
       }
       if (options_.mode == CorridorDriveMode::kExplore) explorer_ = std::make_unique<FloorExplorer>(options_.explore);
+      if (options_.mode == CorridorDriveMode::kRoam) roamer_ = std::make_unique<ContourSteering>(options_.explore.steering);
     } catch (const std::exception& e) {
       NODELET_FATAL("%s", e.what());
       throw;
@@ -112,7 +114,11 @@ class WallFollowerNodelet : public nodelet::Nodelet {
     CorridorObservation obs;
     VelocityCommand cmd;
     std::string state;
-    if (explorer_) {
+    if (roamer_) {
+      const ContourSteeringResult steer = roamer_->Step(scan->ranges, scan->angle_min + yaw_in_base, scan->angle_increment);
+      cmd = steer.command;
+      state = steer.wall_found ? "roaming" : "no_wall";
+    } else if (explorer_) {
       cmd = explorer_->Step(scan->ranges, scan->angle_min + yaw_in_base, scan->angle_increment, odom_pose);
       state = explorer_->phase() == ExplorePhase::kFollow ? "pass_" + std::to_string(explorer_->pass())
                                                           : ExplorePhaseName(explorer_->phase());
@@ -169,6 +175,7 @@ class WallFollowerNodelet : public nodelet::Nodelet {
   std::unique_ptr<WallFollower> follower_;
   std::unique_ptr<CorridorSweep> sweep_;  // sweep and patrol modes
   std::unique_ptr<FloorExplorer> explorer_;  // explore mode
+  std::unique_ptr<ContourSteering> roamer_;  // roam mode
   tf2_ros::Buffer tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   ros::Publisher cmd_pub_, state_pub_, width_pub_;

@@ -49,7 +49,7 @@ TEST(LoadGoToRoomOptions, WithOnlyTheTextMapGivesTheCoreDefaults) {
   EXPECT_EQ(o.planner.wall_distance_m, WallFollowerOptions().wall_distance_m);
   EXPECT_EQ(o.controller.arrive_tolerance_m, GoToRoomOptions().arrive_tolerance_m);
   EXPECT_EQ(o.controller.follower.end_stop_distance_m, WallFollowerOptions().end_stop_distance_m);
-  EXPECT_EQ(o.map_frame_id, "map");
+  EXPECT_EQ(o.global_frame_id, "map");
   EXPECT_TRUE(o.text_fallback);
 }
 
@@ -89,8 +89,16 @@ TEST(LoadGoToRoomOptions, RejectsAMissingOrBrokenTextMapAndBadValuesNamingThePar
   nh.setParam("arrive_tolerance_m", std::string("close"));
   ExpectErrorNaming(nh, "arrive_tolerance_m");
   nh.deleteParam("arrive_tolerance_m");
-  nh.setParam("map_frame_id", std::string("odom"));
+  nh.setParam("global_frame_id", std::string("odom"));
   ExpectErrorNaming(nh, "");  // map and odom frames must differ
+}
+
+TEST(LoadGoToRoomOptions, TheOldNameOfTheMapFrameStillWorks) {
+  ros::NodeHandle nh("~renamed");
+  nh.setParam("text_map_file", PrivateParam<std::string>("text_map_file"));
+  nh.setParam("global_frame_id", std::string("map"));  // as config/go_to_room.yaml
+  nh.setParam("map_frame_id", std::string("world"));   // a launch file written for the old name
+  EXPECT_EQ(LoadGoToRoomOptions(nh).global_frame_id, "world");
 }
 
 // The nodelets, in the manager.

@@ -105,17 +105,18 @@ Listener* listener = nullptr;
 // LoadTextAmclOptions, on parameters set under this node's private namespace.
 TEST(LoadTextAmclOptions, WithoutParametersGivesAmclsDefaultsExceptRecovery) {
   const TextAmclNodeOptions o = LoadTextAmclOptions(ros::NodeHandle("~empty"));
-  EXPECT_EQ(o.setup.filter.min_particles, 100);
-  EXPECT_EQ(o.setup.filter.max_particles, 5000);
-  EXPECT_DOUBLE_EQ(o.setup.filter.kld_err, 0.01);
-  EXPECT_DOUBLE_EQ(o.setup.filter.update_min_a_rad, M_PI / 6.0);
-  EXPECT_EQ(o.setup.likelihood_field.beams.laser_max_beams, 30);
-  EXPECT_EQ(o.setup.laser_model_type, LaserModelType::kLikelihoodField);
-  EXPECT_EQ(o.setup.motion.odom_model_type, OdomModelType::kDiff);
-  EXPECT_DOUBLE_EQ(o.setup.filter.recovery_alpha_slow, 0.001);  // amcl: 0 (documented)
+  EXPECT_EQ(o.session.setup.filter.min_particles, 100);
+  EXPECT_EQ(o.session.setup.filter.max_particles, 5000);
+  EXPECT_DOUBLE_EQ(o.session.setup.filter.kld_err, 0.01);
+  EXPECT_DOUBLE_EQ(o.session.setup.filter.update_min_a_rad, M_PI / 6.0);
+  EXPECT_EQ(o.session.setup.likelihood_field.beams.laser_max_beams, 30);  // amcl's (the core's: 60)
+  EXPECT_EQ(o.session.setup.beam.beams.laser_max_beams, 30);
+  EXPECT_EQ(o.session.setup.laser_model_type, LaserModelType::kLikelihoodField);
+  EXPECT_EQ(o.session.setup.motion.odom_model_type, OdomModelType::kDiff);
+  EXPECT_DOUBLE_EQ(o.session.setup.filter.recovery_alpha_slow, 0.001);  // amcl: 0 (documented)
   EXPECT_DOUBLE_EQ(o.transform_tolerance_s, 0.1);
-  EXPECT_DOUBLE_EQ(o.initial_covariance(0, 0), 0.25);
-  EXPECT_DOUBLE_EQ(o.initial_covariance(2, 2), (M_PI / 12.0) * (M_PI / 12.0));
+  EXPECT_DOUBLE_EQ(o.session.initial_covariance(0, 0), 0.25);
+  EXPECT_DOUBLE_EQ(o.session.initial_covariance(2, 2), (M_PI / 12.0) * (M_PI / 12.0));
   EXPECT_EQ(o.global_frame_id, "map");
   EXPECT_FALSE(o.use_map_topic);
   EXPECT_TRUE(o.map_file.empty());
@@ -149,9 +150,9 @@ TEST(LoadTextAmclOptions, RejectsOutOfRangeMistypedAndUnsupportedValuesNamingThe
 
 TEST(LoadTextAmclOptions, TheShippedConfigLoads) {
   const TextAmclNodeOptions o = LoadTextAmclOptions(ros::NodeHandle("/amcl"));
-  EXPECT_EQ(o.setup.likelihood_field.beams.laser_max_beams, 60);
-  EXPECT_EQ(o.setup.motion.odom_model_type, OdomModelType::kDiffCorrected);
-  EXPECT_TRUE(o.setup.use_text);
+  EXPECT_EQ(o.session.setup.likelihood_field.beams.laser_max_beams, 60);
+  EXPECT_EQ(o.session.setup.motion.odom_model_type, OdomModelType::kDiffCorrected);
+  EXPECT_TRUE(o.session.setup.use_text);
   EXPECT_NE(o.map_file.find("paper_sim_closed_doors.yaml"), std::string::npos);
   EXPECT_NE(o.text_map_file.find("paper_sim_closed_doors.text_map.yaml"), std::string::npos);
 }

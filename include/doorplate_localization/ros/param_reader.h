@@ -1,20 +1,19 @@
 // Strict reading of nodelet parameters, shared by every Load...Options() function: a parameter of the
 // wrong type or out of range is an error naming the fully resolved parameter, never silently replaced.
+// RosParamSource / ReadParamTable read a nodelet's parameter table (ros/param_table.h) from its private
+// namespace.
 #pragma once
 
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
+#include <ros/console.h>
 #include <ros/node_handle.h>
 
-namespace doorplate_localization {
+#include "doorplate_localization/ros/param_table.h"
 
-// A parameter that cannot be used; what() names the fully resolved parameter.
-class ParameterError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+namespace doorplate_localization {
 
 namespace param_detail {
 template <typename T>
@@ -58,6 +57,37 @@ inline std::string ReadFrameParam(const ros::NodeHandle& nh, const std::string& 
                          frame + "'");
   }
   return frame;
+}
+
+// A parameter table's values from the parameter server, under `nh`'s namespace.
+class RosParamSource : public ParamSource {
+ public:
+  explicit RosParamSource(const ros::NodeHandle& nh) : nh_(nh) {}
+  std::optional<ParamValue> Get(const std::string& name, const ParamValue& like) const override {
+    if (!nh_.hasParam(name)) return std::nullopt;
+    return std::visit(
+        [&](const auto& typed) -> ParamValue {
+          using T = std::decay_t<decltype(typed)>;
+          T value;
+          if (!nh_.getParam(name, value)) {
+            throw ParameterError(nh_.resolveName(name) + " must be " + ParamTypeName(like));
+          }
+          return value;
+        },
+        like);
+  }
+  bool Has(const std::string& name) const override { return nh_.hasParam(name); }
+  std::string Resolve(const std::string& name) const override { return nh_.resolveName(name); }
+  void Warn(const std::string& message) const override { ROS_WARN_STREAM(message); }
+
+ private:
+  ros::NodeHandle nh_;
+};
+
+// Reads `table` from `nh`'s namespace into `*o` (ApplyParamTable). Throws ParameterError.
+template <typename O>
+void ReadParamTable(const ros::NodeHandle& nh, const ParamTable<O>& table, O* o) {
+  ApplyParamTable(table, RosParamSource(nh), o);
 }
 
 }  // namespace doorplate_localization
