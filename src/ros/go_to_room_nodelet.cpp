@@ -9,12 +9,17 @@
 // idles beside another driver until asked; ~status (std_msgs/String, latched: "idle", "waiting_for_pose: ...",
 // "turning: ...", "driving: room 105, 3.20 m to go", "facing: ...", "arrived: ...", "refused: <reason>",
 // "failed: <reason>"), ~goal (geometry_msgs/PoseStamped, latched, for rviz). Parameters: go_to_room_options.h.
+// With ~route grid (a whole floor) it also subscribes map (nav_msgs/OccupancyGrid, latched by the localizer)
+// and drives FloorGoToRoom instead: a path over the grid round corners ("following: ..." statuses), published
+// on ~path (nav_msgs/Path, latched, for rviz); a request waits for both the map and the map pose.
 #include <memory>
 #include <mutex>
 #include <optional>
 
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/Twist.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <nav_msgs/Path.h>
 #include <nodelet/nodelet.h>
 #include <pluginlib/class_list_macros.hpp>
 #include <ros/ros.h>
@@ -25,6 +30,7 @@
 #include <tf2_ros/transform_listener.h>
 
 #include "doorplate_localization/behaviour/plate_route.h"
+#include "doorplate_localization/ros/map_conversions.h"
 #include "doorplate_localization/ros/pose_conversions.h"
 #include "doorplate_localization/ros/scan_conversions.h"
 #include "doorplate_localization/ros/text_detection_conversions.h"
@@ -57,7 +63,10 @@ class GoToRoomNodelet : public nodelet::Nodelet {
     goal_pub_ = pnh.advertise<geometry_msgs::PoseStamped>("goal", 1, /*latch=*/true);
     request_sub_ = nh.subscribe("go_to_room", 5, &GoToRoomNodelet::OnRequest, this);
     scan_sub_ = nh.subscribe("scan", 1, &GoToRoomNodelet::OnScan, this);
-    if (options_.text_fallback) {
+    if (options_.route == "grid") {
+      path_pub_ = pnh.advertise<nav_msgs::Path>("path", 1, /*latch=*/true);
+      map_sub_ = nh.subscribe("map", 1, &GoToRoomNodelet::OnMap, this);
+    } else if (options_.text_fallback) {
       detections_sub_ = nh.subscribe("text_detections", 10, &GoToRoomNodelet::OnDetections, this);
     }
     watchdog_ = nh.createTimer(ros::Duration(options_.scan_timeout_s), &GoToRoomNodelet::OnWatchdog, this);
@@ -68,8 +77,9 @@ class GoToRoomNodelet : public nodelet::Nodelet {
 
   void OnRequest(const std_msgs::String::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
-    const bool was_active = controller_->active();
+    const bool was_active = Active();
     controller_->Cancel();
+    if (floor_) floor_->Cancel();
     pending_.reset();
     const RoomCandidates candidates = planner_->Candidates(msg->data);
     if (candidates.landmarks.empty()) {
@@ -85,6 +95,10 @@ class GoToRoomNodelet : public nodelet::Nodelet {
   void TryPlan(const ros::Time& stamp) {
     std::string problem;
     const std::optional<Pose2D> map_pose = LookupPose(options_.global_frame_id, stamp, &problem);
+    if (options_.route == "grid") {
+      TryPlanOnGrid(map_pose, problem);
+      return;
+    }
     RoomGoalResult result;
     if (map_pose) {
       result = planner_->Plan(*pending_, map_pose);
@@ -114,6 +128,75 @@ class GoToRoomNodelet : public nodelet::Nodelet {
     PublishStatus(controller_->Status());
   }
 
+  // TryPlan for ~route grid: the goal from the text map, the path from the map pose over the latest map.
+  void TryPlanOnGrid(const std::optional<Pose2D>& map_pose, const std::string& problem) {
+    if (!floor_ || !map_pose) {
+      const std::string waiting = "waiting_for_pose: room " + *pending_ + ": " +
+                                  (!floor_ ? "no map on " + map_sub_.getTopic() + " yet"
+                                           : "no tf " + options_.global_frame_id + " -> " + options_.base_frame_id +
+                                                 " (" + problem + ")") +
+                                  "; not driving";
+      NODELET_WARN_THROTTLE(5.0, "%s", waiting.c_str());
+      PublishStatus(waiting);
+      return;
+    }
+    const RoomGoalResult result = planner_->Plan(*pending_, map_pose);
+    pending_.reset();
+    if (!result.goal) {
+      Refuse(result.refusal, false);
+      return;
+    }
+    goal_frame_ = options_.global_frame_id;
+    if (!floor_->Start(*result.goal, *map_pose)) {
+      NODELET_ERROR("go to room %s", floor_->Status().c_str());
+      PublishStatus(floor_->Status());
+      return;
+    }
+    const Pose2D& g = result.goal->pose;
+    NODELET_INFO("going to room %s: goal (%.2f, %.2f, %.2f rad) in %s, path %.1f m%s%s", result.goal->room.c_str(),
+                 g.x_m, g.y_m, g.theta_rad, goal_frame_.c_str(), floor_->first_plan_length_m(),
+                 result.goal->note.empty() ? "" : "; ", result.goal->note.c_str());
+    goal_pub_.publish(ToGoalPoseMsg(g, goal_frame_, ros::Time::now()));
+    PublishPath();
+    PublishStatus(floor_->Status());
+  }
+
+  void OnMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    OccupancyGrid grid;
+    const std::string problem = FromOccupancyGridMsg(*msg, &grid);
+    if (!problem.empty()) {
+      NODELET_ERROR("%s: %s; keeping the previous map", map_sub_.getTopic().c_str(), problem.c_str());
+      return;
+    }
+    if (floor_ && floor_->active()) {
+      cmd_pub_.publish(geometry_msgs::Twist());
+      NODELET_WARN("%s: a new map while going to room %s: stopped, ask again", map_sub_.getTopic().c_str(),
+                   floor_->goal().room.c_str());
+    }
+    floor_ = std::make_unique<FloorGoToRoom>(options_.floor, grid);
+    NODELET_INFO("go to room: map %u x %u cells at %.3f m for the grid route", msg->info.width, msg->info.height,
+                 msg->info.resolution);
+    if (pending_) TryPlan(ros::Time(0));
+  }
+
+  void PublishPath() {
+    nav_msgs::Path path;
+    path.header.frame_id = goal_frame_;
+    path.header.stamp = ros::Time::now();
+    for (const Vec2& p : floor_->path().waypoints) {
+      geometry_msgs::PoseStamped pose;
+      pose.header = path.header;
+      pose.pose.position.x = p.x;
+      pose.pose.position.y = p.y;
+      pose.pose.orientation.w = 1.0;
+      path.poses.push_back(pose);
+    }
+    path_pub_.publish(path);
+  }
+
+  bool Active() const { return controller_->active() || (floor_ && floor_->active()); }
+
   void Refuse(const std::string& reason, bool was_active) {
     controller_->Refuse(reason);
     if (was_active) cmd_pub_.publish(geometry_msgs::Twist());
@@ -137,11 +220,15 @@ class GoToRoomNodelet : public nodelet::Nodelet {
     }
     if (!problem.empty()) {
       NODELET_ERROR_THROTTLE(2.0, "%s: %s; not driving", scan_sub_.getTopic().c_str(), problem.c_str());
-      if (controller_->active()) cmd_pub_.publish(geometry_msgs::Twist());
+      if (Active()) cmd_pub_.publish(geometry_msgs::Twist());
       return;
     }
     last_valid_scan_ = ros::Time::now();
     if (pending_) TryPlan(scan->header.stamp);
+    if (floor_ && floor_->active()) {
+      StepOnGrid(*scan, yaw_in_base);
+      return;
+    }
     if (!controller_->active()) return;
     const std::optional<Pose2D> pose = LookupPose(goal_frame_, scan->header.stamp, &problem);
     if (!pose) {
@@ -158,6 +245,28 @@ class GoToRoomNodelet : public nodelet::Nodelet {
     const std::string status = controller_->Status();
     if (controller_->state() == GoToRoomState::kFailed) NODELET_ERROR("go to room %s", status.c_str());
     if (controller_->state() == GoToRoomState::kArrived) NODELET_INFO("go to room %s", status.c_str());
+    PublishStatus(status);
+  }
+
+  void StepOnGrid(const sensor_msgs::LaserScan& scan, double yaw_in_base) {
+    std::string problem;
+    const std::optional<Pose2D> pose = LookupPose(goal_frame_, scan.header.stamp, &problem);
+    if (!pose) {
+      const std::string waiting = "waiting_for_pose: room " + floor_->goal().room + ": no tf " + goal_frame_ +
+                                  " -> " + options_.base_frame_id + " (" + problem + "); not driving";
+      NODELET_WARN_THROTTLE(5.0, "%s", waiting.c_str());
+      cmd_pub_.publish(geometry_msgs::Twist());
+      PublishStatus(waiting);
+      return;
+    }
+    const int replans = floor_->replans();
+    const VelocityCommand cmd = floor_->Step(scan.ranges, scan.angle_min + yaw_in_base, scan.angle_increment, *pose,
+                                             scan.header.stamp.toSec());
+    cmd_pub_.publish(ToTwistMsg(cmd));  // a zero command once the goal ends
+    if (floor_->replans() != replans) PublishPath();
+    const std::string status = floor_->Status();
+    if (floor_->state() == FloorGoToRoomState::kFailed) NODELET_ERROR("go to room %s", status.c_str());
+    if (floor_->state() == FloorGoToRoomState::kArrived) NODELET_INFO("go to room %s", status.c_str());
     PublishStatus(status);
   }
 
@@ -194,7 +303,7 @@ class GoToRoomNodelet : public nodelet::Nodelet {
 
   void OnWatchdog(const ros::TimerEvent&) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (controller_->active() && !last_valid_scan_.isZero() &&
+    if (Active() && !last_valid_scan_.isZero() &&
         (ros::Time::now() - last_valid_scan_).toSec() > options_.scan_timeout_s) {
       NODELET_WARN_THROTTLE(5.0, "%s: no valid scan for %.1f s; stopping", scan_sub_.getTopic().c_str(),
                             options_.scan_timeout_s);
@@ -230,10 +339,11 @@ class GoToRoomNodelet : public nodelet::Nodelet {
   GoToRoomNodeOptions options_;
   std::unique_ptr<RoomGoalPlanner> planner_;
   std::unique_ptr<GoToRoom> controller_;
+  std::unique_ptr<FloorGoToRoom> floor_;  // ~route grid, once a map arrived
   tf2_ros::Buffer tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
-  ros::Publisher cmd_pub_, status_pub_, goal_pub_;
-  ros::Subscriber request_sub_, scan_sub_, detections_sub_;
+  ros::Publisher cmd_pub_, status_pub_, goal_pub_, path_pub_;
+  ros::Subscriber request_sub_, scan_sub_, detections_sub_, map_sub_;
   ros::Timer watchdog_;
   std::mutex mutex_;
   std::optional<std::string> pending_;  // a request waiting for a pose

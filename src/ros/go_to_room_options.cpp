@@ -15,6 +15,10 @@ const ParamTable<GoToRoomNodeOptions>& GoToRoomParamTable() {
                "the doorplate text map (docs/text-map-format.md); unreadable, invalid or empty: the nodelet does "
                "not start, naming it")
           .DefaultText("(required)"),
+      Param<O>("route", DOORPLATE_PARAM_FIELD(route),
+               "`corridor`: wall following along the goal's corridor (the paper's; eq. 15 fallback); `grid`: a "
+               "whole floor, a path planned over the `map` topic round corners and followed with the map pose",
+               r::OneOf({"corridor", "grid"})),
       Param<O>("duplicate_rule", DOORPLATE_PARAM_FIELD(planner.duplicate_rule),
                "a room number on several plates: `nearest` (the plate closest to the robot; the log says which "
                "plates there were) or `refuse` (asks for `<room>@<wall>`)",
@@ -109,11 +113,16 @@ GoToRoomNodeOptions GoToRoomOptionsFrom(const ParamSource& source) {
                          "' has no landmarks: no room can be reached");
   }
   o.planner.wall_distance_m = o.controller.follower.wall_distance_m;  // the goal is where the following ends
+  o.floor.follower.cruise_speed_mps = o.controller.follower.cruise_speed_mps;
+  o.floor.follower.max_angular_speed_rps = o.controller.follower.max_angular_speed_rps;
+  o.floor.follower.turn_speed_rps = o.controller.turn_speed_rps;
+  o.floor.follower.face_tolerance_rad = o.controller.face_tolerance_rad;
   if (std::set<std::string>{o.global_frame_id, o.odom_frame_id, o.base_frame_id}.size() != 3) {
     throw ParameterError(source.Resolve("") + ": global_frame_id, odom_frame_id and base_frame_id must all differ");
   }
   CheckWithCore(table, o, source, [&o] {
     (void)GoToRoom(o.controller);
+    (void)PathFollower(o.floor.follower);
     (void)RoomGoalPlanner(o.planner, TextMap{}, o.text_map_file);
   });
   return o;

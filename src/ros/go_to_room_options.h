@@ -6,6 +6,7 @@
 
 #include <ros/node_handle.h>
 
+#include "doorplate_localization/behaviour/floor_go_to_room.h"
 #include "doorplate_localization/behaviour/go_to_room.h"
 #include "doorplate_localization/behaviour/room_goal_planner.h"
 #include "doorplate_localization/maps/text_map.h"
@@ -25,6 +26,12 @@ struct GoToRoomNodeOptions {
   // parameters under the same names (~wall_distance_m, ~cruise_speed_mps, ...; no ~wall_side: the goal's
   // wall is followed).
   GoToRoomOptions controller;
+  // ~route: "corridor" (the paper's: wall following along the goal's corridor, eq. 15 fallback) or "grid"
+  // (a whole floor: FloorGoToRoom plans over the `map` topic's grid, round corners, and follows the path
+  // with the map pose; no eq. 15 fallback). Grid mode takes ~cruise_speed_mps, ~max_angular_speed_rps,
+  // ~turn_speed_rps, ~face_tolerance_rad from the same parameters as the corridor controller.
+  std::string route = "corridor";
+  FloorGoToRoomOptions floor;
   // The localizer's frame: pose = tf map -> base_link (~global_frame_id, amcl's name; ~map_frame_id deprecated).
   std::string global_frame_id = "map";
   std::string odom_frame_id = "odom";      // the eq. 15 fallback drives in this frame
