@@ -11,10 +11,14 @@
 #   3. report (doorplate_mission_report): report.md with the plates read, the map's length / width
 #      accuracy and plate errors, the localization and go-to-room errors beside the paper's figures, a PNG
 #      of the map with plates and trajectories, and the commands that reproduce the full tables.
+# A world that lists more than one corridor (`corridors:`, e.g. worlds/hospital_floor_ring.yaml) runs the
+# floor mode: mapping explores the whole floor (FloorExplorer), localization searches by following one wall
+# wherever it leads (roam) and go-to-room plans a path over the saved map round corners (route grid), at 2x
+# real time; the default start is the middle of the corridor farthest from the world's start.
 # Usage: scripts/demo.sh [--world FILE] [--seed N] [--room TEXT] [--start "X Y THETA_DEG"] [--timeout-s S]
 set -euo pipefail
 repo="$(cd "$(dirname "$0")/.." && pwd)"
-world="$repo/worlds/paper_real_corridor.yaml"; seed=1; room=207; start="30.0 1.25 180"; timeout_s=900
+world="$repo/worlds/paper_real_corridor.yaml"; seed=1; room=207; start=""; timeout_s=""
 usage() { echo "usage: scripts/demo.sh [--world FILE] [--seed N] [--room TEXT] [--start \"X Y THETA_DEG\"] [--timeout-s S]" >&2; exit 2; }
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -26,6 +30,29 @@ while [ $# -gt 0 ]; do
     *) usage;;
   esac
 done
+[ -f "$world" ] || { echo "demo: --world $world: no such file" >&2; exit 2; }
+world="$(cd "$(dirname "$world")" && pwd)/$(basename "$world")"  # roslaunch's nodes run in ROS_HOME
+# Floor mode: how many corridors the world lists, and a start pose in the one farthest from the world's start.
+floor_info=$(/usr/bin/python3 - "$world" <<'PY'
+import math, sys, yaml
+w = yaml.safe_load(open(sys.argv[1]))
+cs = w.get("corridors") or []
+s = w["robot"]["start"]
+def mid(c): return [(a + b) / 2 for a, b in zip(c["from"], c["to"])]
+far = max(cs, key=lambda c: math.dist(mid(c), [s["x_m"], s["y_m"]]), default=None)
+start = "" if far is None else "%.2f %.2f %.0f" % (*mid(far), math.degrees(math.atan2(far["to"][1] - far["from"][1], far["to"][0] - far["from"][0])))
+print(len(cs), start)
+PY
+) || { echo "cannot read $world" >&2; exit 2; }
+read -r n_corridors floor_start <<< "$floor_info"
+floor=false; [ "$n_corridors" -gt 1 ] && floor=true
+if $floor; then
+  rtf=2; [ -n "$start" ] || start="$floor_start"; [ -n "$timeout_s" ] || timeout_s=2400
+  mapping_drive="explore:=true"
+else
+  rtf=5; [ -n "$start" ] || start="30.0 1.25 180"; [ -n "$timeout_s" ] || timeout_s=900
+  mapping_drive="sweep:=true"
+fi
 read -r start_x start_y start_theta <<< "$start"
 [ -n "${start_theta:-}" ] || usage
 build="${DOORPLATE_BUILD:-$repo/build}"   # where scripts/build.sh builds
@@ -60,17 +87,17 @@ wait_for() {
 }
 
 echo "== 1/3 mapping $(basename "$world") with text, seed $seed (log: $out/mapping.log)"
-roslaunch doorplate_localization mapping.launch world:="$world" seed:="$seed" slam_seed:="$seed" \
-  real_time_factor:=5 map_output_dir:="$maps" bag:="$out/mapping.bag" > "$out/mapping.log" 2>&1 &
+roslaunch doorplate_localization mapping.launch world:="$world" seed:="$seed" slam_seed:="$seed" $mapping_drive \
+  real_time_factor:=$rtf map_output_dir:="$maps" bag:="$out/mapping.bag" > "$out/mapping.log" 2>&1 &
 launch_pid=$!
-wait_for /corridor_follower/state '^done$' "the mapping sweep" "$out/mapping.log"
+wait_for /corridor_follower/state '^done$' "the mapping drive" "$out/mapping.log"
 rosservice call /slam_mapping/save_maps | tee "$out/save_maps.txt"
 grep -q "success: True" "$out/save_maps.txt" || { echo "saving the maps failed"; exit 1; }
 stop_launch
 
 echo "== 2/3 localization from an unknown pose ($start_x, $start_y, $start_theta deg), then go to room $room"
 roslaunch doorplate_localization localization.launch world:="$world" seed:="$seed" filter_seed:="$seed" \
-  map_file:="$maps/map.yaml" text_map_file:="$maps/map.text_map.yaml" real_time_factor:=5 \
+  map_file:="$maps/map.yaml" text_map_file:="$maps/map.text_map.yaml" real_time_factor:=$rtf floor:=$floor \
   start_x_m:="$start_x" start_y_m:="$start_y" start_theta_deg:="$start_theta" bag:="$out/localization.bag" \
   > "$out/localization.log" 2>&1 &
 launch_pid=$!
