@@ -224,7 +224,8 @@ int main(int argc, char** argv) {
     md << "\n## 2. Global localization from an unknown pose (paper Sec. 3.4; Table III)\n\n"
        << "The robot started at (" << start.x_m << ", " << start.y_m << ", " << start.theta_rad * kRadToDeg
        << " deg) in the world, unknown to Text AMCL, which started with global localization on the saved maps "
-          "while the robot patrolled the corridor.\n\n| figure | this run |\n|---|---|\n";
+       << (corridors.empty() ? "while the robot patrolled the corridor" : "while the robot roamed the floor (one wall, wherever it leads)")
+       << ".\n\n| figure | this run |\n|---|---|\n";
     if (t_converged < 0.0) {
       md << "| converged | no |\n";
     } else {
