@@ -9,15 +9,10 @@
 #include "doorplate_localization/mcl/localization_grid.h"
 #include "doorplate_localization/sim/ground_truth_maps.h"
 #include "map_measure.h"
+#include "stats.h"
 
 namespace doorplate_localization {
 namespace {
-
-double Median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 // Rays in the grid's map frame, from world-frame origins and directions.
 class GridRays {

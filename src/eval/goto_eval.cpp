@@ -11,18 +11,12 @@
 #include "doorplate_localization/sim/simulator.h"
 #include "eval_args.h"
 #include "localize_sensors.h"
+#include "stats.h"
 
 namespace doorplate_localization {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double Median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 void Validate(const GotoEvalOptions& o, const World& world) {
   auto check = [](bool ok, const char* field) {
