@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
 
 namespace doorplate_localization {
@@ -124,6 +125,13 @@ std::uint64_t PassSeed(std::uint64_t seed, int pass) {
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
   return z ^ (z >> 31);
+}
+
+std::string DefaultTextMapPath(const std::string& world_path, const std::string& world_name) {
+  const std::filesystem::path dir = std::filesystem::path(world_path).parent_path();
+  return ((dir.empty() ? std::filesystem::path(".") : dir) / ".." / "maps" / (world_name + ".text_map.yaml"))
+      .lexically_normal()
+      .string();
 }
 
 }  // namespace doorplate_localization

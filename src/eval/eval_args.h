@@ -70,4 +70,7 @@ CommonArgs ReadCommonArgs(const EvalArgs& args);
 // (SplitMix64), the same on every machine.
 std::uint64_t PassSeed(std::uint64_t seed, int pass);
 
+// Where a built-in world's text map lies: <world file's folder>/../maps/<world name>.text_map.yaml.
+std::string DefaultTextMapPath(const std::string& world_path, const std::string& world_name);
+
 }  // namespace doorplate_localization

@@ -34,13 +34,6 @@ std::vector<OptionSpec> GotoOptions() {
   };
 }
 
-std::string DefaultMapPath(const std::string& world_path, const World& world) {
-  const std::filesystem::path dir = std::filesystem::path(world_path).parent_path();
-  return ((dir.empty() ? std::filesystem::path(".") : dir) / ".." / "maps" / (world.name + ".text_map.yaml"))
-      .lexically_normal()
-      .string();
-}
-
 void PrintTable(const GotoEvalResult& r, const GotoEvalOptions& o) {
   std::printf("world %s, %d trial(s), seed %llu, %s, success within %.2f m\n", r.world_name.c_str(),
               static_cast<int>(r.trials.size()), static_cast<unsigned long long>(o.seed),
@@ -154,7 +147,7 @@ int RunGotoCommand(const std::vector<std::string>& args, const std::string& comm
 
   const std::string world_path = parsed.String("world");
   const World world = LoadWorldFile(world_path);
-  const std::string map_path = parsed.String("map").empty() ? DefaultMapPath(world_path, world) : parsed.String("map");
+  const std::string map_path = parsed.String("map").empty() ? DefaultTextMapPath(world_path, world.name) : parsed.String("map");
   auto text_map = std::make_shared<const TextMap>(LoadTextMap(map_path));
   if (text_map->occupancy_map.empty()) {
     throw std::runtime_error(map_path + ": occupancy_map is empty: the experiment needs the grid it names");

@@ -49,13 +49,6 @@ std::vector<std::string> ExpandKidnapFlag(const std::vector<std::string>& args) 
   return out;
 }
 
-std::string DefaultMapPath(const std::string& world_path, const World& world) {
-  const std::filesystem::path dir = std::filesystem::path(world_path).parent_path();
-  return ((dir.empty() ? std::filesystem::path(".") : dir) / ".." / "maps" / (world.name + ".text_map.yaml"))
-      .lexically_normal()
-      .string();
-}
-
 void PrintSummary(const LocalizeEvalResult& r, const LocalizeEvalOptions& o) {
   const LocalizeSummary s = Summarize(r);
   std::printf("world %s, %s, %d trial(s), seed %llu, drive %s%s\n", r.world_name.c_str(), ToString(r.method),
@@ -140,7 +133,7 @@ int RunLocalizeCommand(const std::vector<std::string>& args, const std::string& 
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("localize: --drive: ") + e.what() + " (or auto)");
   }
-  const std::string map_path = parsed.String("map").empty() ? DefaultMapPath(world_path, world) : parsed.String("map");
+  const std::string map_path = parsed.String("map").empty() ? DefaultTextMapPath(world_path, world.name) : parsed.String("map");
   auto text_map = std::make_shared<const TextMap>(LoadTextMap(map_path));
   if (text_map->occupancy_map.empty()) {
     throw std::runtime_error(map_path + ": occupancy_map is empty: the experiment needs the grid it names");
