@@ -131,14 +131,7 @@ class GotoRun {
   }
 
   void CameraStep() {
-    const std::vector<PlateReport> reports = extractor_->Process(sim_.CameraImage(), sim_.time_s());
-    if (reports.empty()) return;
-    std::vector<PlateReading> readings;
-    for (const PlateReport& report : reports) readings.push_back(ToPlateReading(report, camera_yaw_rad_));
-    session_->AddOdometry(sim_.time_s(), sim_.odom_pose());
-    for (const PlateReadingOutcome& p : session_->AddPlates(sim_.time_s(), readings).plates) {
-      if (p.disposition == PlateDisposition::kWeighed && p.result.used) ++trial_.plate_updates;
-    }
+    trial_.plate_updates += FeedCameraFrame(sim_, *extractor_, camera_yaw_rad_, *session_).plate_updates;
   }
 
   void Finish(bool timed_out, double time_limit_s) {

@@ -136,15 +136,10 @@ class TrialRun {
   // One camera image through the reader; its reports go to the session with the odometry of this moment
   // (the session measures their range and weighs them there).
   bool CameraStep() {
-    const std::vector<PlateReport> reports = extractor_->Process(sim_.CameraImage(), sim_.time_s());
-    if (reports.empty()) return false;
-    std::vector<PlateReading> readings;
-    for (const PlateReport& report : reports) readings.push_back(ToPlateReading(report, camera_yaw_rad_));
-    trial_.plate_reports += static_cast<int>(reports.size());
-    session_->AddOdometry(sim_.time_s(), sim_.odom_pose());
-    for (const PlateReadingOutcome& p : session_->AddPlates(sim_.time_s(), readings).plates) {
-      if (p.disposition == PlateDisposition::kWeighed && p.result.used) ++trial_.plate_updates;
-    }
+    const CameraFeed feed = FeedCameraFrame(sim_, *extractor_, camera_yaw_rad_, *session_);
+    if (feed.reports == 0) return false;
+    trial_.plate_reports += feed.reports;
+    trial_.plate_updates += feed.plate_updates;
     return CheckState();
   }
 

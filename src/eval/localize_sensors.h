@@ -11,7 +11,10 @@
 #include "doorplate_localization/mcl/plate_reading.h"
 #include "doorplate_localization/sim/laser_simulator.h"
 #include "doorplate_localization/sim/sensor_options.h"
+#include "doorplate_localization/mcl/text_amcl_session.h"
+#include "doorplate_localization/sim/simulator.h"
 #include "doorplate_localization/text/plate_tracker.h"
+#include "doorplate_localization/text/text_extractor.h"
 
 namespace doorplate_localization {
 
@@ -24,5 +27,14 @@ LocalizationScan ToLocalizationScan(const SimulatedScan& scan, const LaserOption
 // scans, as in the nodelet), and the camera side from the sign of the yaw. The camera's optical centre is
 // taken as base_link's origin (as above).
 PlateReading ToPlateReading(const PlateReport& report, double camera_yaw_rad);
+
+// One camera image of `sim` through `extractor`; its reports, as readings (ToPlateReading), go to `session`
+// with the odometry of this moment (the session measures their range and weighs them). The experiments'
+// one camera input (localize, goto), as the nodelet's OnDetections is the user's.
+struct CameraFeed {
+  int reports = 0;       // plate reports of this image
+  int plate_updates = 0; // of them, readings the filter weighed and used
+};
+CameraFeed FeedCameraFrame(Simulator& sim, TextExtractor& extractor, double camera_yaw_rad, TextAmclSession& session);
 
 }  // namespace doorplate_localization
