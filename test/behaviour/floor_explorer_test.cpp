@@ -131,15 +131,20 @@ int Unread(const ExploreRun& run) {
   return n;
 }
 
-TEST(FloorExplorer, OnAnLShapedFloorReadsEveryPlateAndEndsBecauseThePlatesRepeat) {
-  const World world = LWorld();
-  const ExploreRun run = Explore(world, FloorExplorerOptions{});
+// Done without bumping, every plate read, and both passes ended because known plates were read again.
+void ExpectCoveredAndEndedByPlates(const World& world, const ExploreRun& run) {
   ASSERT_TRUE(run.done);
   EXPECT_FALSE(run.bumped);
   EXPECT_EQ(Unread(run), 0) << UnreadPlates(world, run);
   ASSERT_EQ(run.pass_ends.size(), 2u);
   EXPECT_EQ(run.pass_ends[0], PassEnd::kPlatesRevisited);
   EXPECT_EQ(run.pass_ends[1], PassEnd::kPlatesRevisited);
+}
+
+TEST(FloorExplorer, OnAnLShapedFloorReadsEveryPlateAndEndsBecauseThePlatesRepeat) {
+  const World world = LWorld();
+  const ExploreRun run = Explore(world, FloorExplorerOptions{});
+  ASSERT_NO_FATAL_FAILURE(ExpectCoveredAndEndedByPlates(world, run));
   // Pass 1 is both legs out and back (~2 × 22 m); pass 2 stops once it re-reads known plates.
   EXPECT_GT(run.distance_m, 40.0);
   EXPECT_LT(run.distance_m, 90.0);
@@ -148,12 +153,7 @@ TEST(FloorExplorer, OnAnLShapedFloorReadsEveryPlateAndEndsBecauseThePlatesRepeat
 TEST(FloorExplorer, RoundARingWithABranchReadsBothWallsOfEveryCorridorAndClosesTheLoopTwice) {
   const World world = RingWorld();
   const ExploreRun run = Explore(world, FloorExplorerOptions{});
-  ASSERT_TRUE(run.done);
-  EXPECT_FALSE(run.bumped);
-  EXPECT_EQ(Unread(run), 0) << UnreadPlates(world, run);
-  ASSERT_EQ(run.pass_ends.size(), 2u);
-  EXPECT_EQ(run.pass_ends[0], PassEnd::kPlatesRevisited);
-  EXPECT_EQ(run.pass_ends[1], PassEnd::kPlatesRevisited);
+  ASSERT_NO_FATAL_FAILURE(ExpectCoveredAndEndedByPlates(world, run));
   int read_twice = 0;
   for (const int r : run.reads) read_twice += r >= 2;
   EXPECT_GE(read_twice, 4);  // the first plates of each pass, re-read where the loop closes
