@@ -13,15 +13,6 @@
 namespace doorplate_localization {
 namespace {
 
-// A closed polygon of walls (corridor on the left of each edge: list the outline counter-clockwise and
-// the outline of a block inside it clockwise).
-void AddPolygon(World& world, const std::vector<Vec2>& corners, const std::string& prefix) {
-  for (std::size_t i = 0; i < corners.size(); ++i) {
-    world.walls.push_back({prefix + std::to_string(i), {corners[i], corners[(i + 1) % corners.size()]}, true,
-                           {200, 200, 200}});
-  }
-}
-
 // Plates every `spacing_m` along every wall, `clear_m` clear of its ends (doors are not built into the
 // square where two corridors meet; the end wall of a dead end gets none: the camera turns away from it);
 // texts 101, 102, ...
@@ -43,8 +34,7 @@ void AddPlates(World& world, double spacing_m, double clear_m) {
 
 // An L: a 14 m leg along x and a 10 m leg north at its east end, both 2 m wide (a tree: no loop).
 World LWorld() {
-  World world;
-  AddPolygon(world, {{0, 0}, {14, 0}, {14, 12}, {12, 12}, {12, 2}, {0, 2}}, "l");
+  World world = test::LCorridor(14.0, 12.0);
   world.start_pose = {1.0, 0.6, 0.0};
   AddPlates(world, 3.0, 1.5);  // plates 1.5 m from the dead end's wall
   return world;
@@ -53,8 +43,8 @@ World LWorld() {
 // A ring of 2 m corridors round a 12 m × 8 m block, with a 6 m dead-end branch off the outer south wall.
 World RingWorld() {
   World world;
-  AddPolygon(world, {{0, 0}, {6, 0}, {6, -6}, {8, -6}, {8, 0}, {16, 0}, {16, 12}, {0, 12}}, "outer");
-  AddPolygon(world, {{2, 2}, {2, 10}, {14, 10}, {14, 2}}, "block");
+  test::AddWallPolygon(world, {{0, 0}, {6, 0}, {6, -6}, {8, -6}, {8, 0}, {16, 0}, {16, 12}, {0, 12}}, "outer");
+  test::AddWallPolygon(world, {{2, 2}, {2, 10}, {14, 10}, {14, 2}}, "block");
   world.start_pose = {1.5, 0.6, 0.0};
   AddPlates(world, 3.0, 3.0);  // 1 m clear of where the corridors meet
   return world;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "../sim/test_worlds.h"
 #include "doorplate_localization/behaviour/grid_path_planner.h"
 #include "doorplate_localization/sim/ground_truth_maps.h"
 #include "doorplate_localization/sim/simulator.h"
@@ -141,16 +142,7 @@ TEST(PathFollower, ANonFinitePoseStopsWithoutEndingAndBadInputsThrow) {
 }
 
 // An L of 2 m corridors: along x from 0 to 8 (y in [0, 2]), then up along y (x in [6, 8]) to y = 8.
-World LCorridorWorld() {
-  World world;
-  world.name = "l_corridor";
-  const auto wall = [](const char* id, Vec2 a, Vec2 b) { return Wall{id, {a, b}, true, {200, 200, 200}}; };
-  world.walls = {wall("south", {0, 0}, {8, 0}),   wall("east", {8, 0}, {8, 8}),    wall("north_end", {8, 8}, {6, 8}),
-                 wall("inner_w", {6, 8}, {6, 2}), wall("inner_n", {6, 2}, {0, 2}), wall("west_end", {0, 2}, {0, 0})};
-  world.start_pose = {1.0, 1.0, 0.0};
-  BuildSurfaces(world);
-  return world;
-}
+World LCorridorWorld() { return test::LCorridor(8.0, 8.0); }
 
 TEST(PathFollower, InTheSimulatorDrivesRoundTheCornerOfAnLCorridorToTheGoal) {
   const World world = LCorridorWorld();

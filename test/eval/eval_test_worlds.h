@@ -35,13 +35,8 @@ inline World CorridorWithPlates(double length_m, double width_m, const std::vect
 // (0, 1) → (10, 1)) and "up" x in [8, 10], y in [2, 6] (centreline (9, 2) → (9, 6)); no doors or plates;
 // the robot starts at (1, 1) facing +x.
 inline World LShapedFloor() {
-  World world;
+  World world = LCorridor(10.0, 6.0);
   world.name = "l_floor";
-  const std::vector<Vec2> corners = {{0, 0}, {10, 0}, {10, 6}, {8, 6}, {8, 2}, {0, 2}};
-  for (size_t i = 0; i < corners.size(); ++i) {
-    world.walls.push_back({"w" + std::to_string(i), {corners[i], corners[(i + 1) % corners.size()]}, true,
-                           {200, 200, 200}});
-  }
   world.corridors = {{"along", {{0, 1}, {10, 1}}, 2.0}, {"up", {{9, 2}, {9, 6}}, 2.0}};
   world.start_pose = {1.0, 1.0, 0.0};
   BuildSurfaces(world);

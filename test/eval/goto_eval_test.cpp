@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 
+#include "../sim/test_worlds.h"
 #include "doorplate_localization/sim/ground_truth_maps.h"
 
 namespace doorplate_localization {
@@ -12,11 +13,8 @@ namespace {
 
 // An L of 2 m corridors (along x from 0 to 8, then up x in [6, 8] to y = 8) with three plates.
 World LFloor() {
-  World world;
+  World world = test::LCorridor(8.0, 8.0);
   world.name = "l_floor";
-  const auto wall = [](const char* id, Vec2 a, Vec2 b) { return Wall{id, {a, b}, true, {200, 200, 200}}; };
-  world.walls = {wall("south", {0, 0}, {8, 0}),   wall("east", {8, 0}, {8, 8}),    wall("north_end", {8, 8}, {6, 8}),
-                 wall("inner_w", {6, 8}, {6, 2}), wall("inner_n", {6, 2}, {0, 2}), wall("west_end", {0, 2}, {0, 0})};
   const auto plate = [&world](const char* text, int wall_index, double offset_m) {
     TextSign sign;
     sign.text = text;

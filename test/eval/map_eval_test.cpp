@@ -53,13 +53,8 @@ TEST(MapEval, LaserOnlyMethodMapsNoPlates) {
 // An L of two 2 m wide corridors (10 m along x, then 6 m north), plates on both walls of both legs, and
 // its `corridors` ground truth: a floor the sweep cannot cover.
 World TinyLFloor() {
-  World world;
+  World world = test::LCorridor(10.0, 8.0);
   world.name = "tiny_l";
-  const std::vector<Vec2> corners = {{0, 0}, {10, 0}, {10, 8}, {8, 8}, {8, 2}, {0, 2}};
-  for (std::size_t i = 0; i < corners.size(); ++i) {
-    world.walls.push_back({"w" + std::to_string(i), {corners[i], corners[(i + 1) % corners.size()]}, true,
-                           {200, 200, 200}});
-  }
   const std::vector<std::pair<int, double>> places = {{0, 3.0}, {0, 6.5}, {4, 4.0}, {4, 6.5}, {1, 4.5}, {3, 2.5}};
   for (std::size_t i = 0; i < places.size(); ++i) {
     TextSign sign;
