@@ -11,7 +11,8 @@ add_library(doorplate_behaviour
   src/behaviour/floor_explorer.cpp
   src/behaviour/grid_path_planner.cpp
   src/behaviour/path_follower.cpp
-  src/behaviour/floor_go_to_room.cpp)
+  src/behaviour/floor_go_to_room.cpp
+  src/behaviour/building_route.cpp)
 target_include_directories(doorplate_behaviour PUBLIC include PRIVATE ${OpenCV_INCLUDE_DIRS})
 target_link_libraries(doorplate_behaviour PUBLIC doorplate_common doorplate_maps PRIVATE opencv_core opencv_imgproc)
 install(TARGETS doorplate_behaviour LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
@@ -25,6 +26,7 @@ if(CATKIN_ENABLE_TESTING)
   doorplate_add_core_test(floor_explorer_test test/behaviour/floor_explorer_test.cpp doorplate_behaviour doorplate_sim)
   doorplate_add_core_test(go_to_room_test test/behaviour/go_to_room_test.cpp doorplate_behaviour doorplate_sim)
   doorplate_add_core_test(grid_path_planner_test test/behaviour/grid_path_planner_test.cpp doorplate_behaviour)
+  doorplate_add_core_test(building_route_test test/behaviour/building_route_test.cpp doorplate_behaviour)
   doorplate_add_core_test(path_follower_test test/behaviour/path_follower_test.cpp doorplate_behaviour doorplate_sim)
   doorplate_add_core_test(floor_go_to_room_test test/behaviour/floor_go_to_room_test.cpp doorplate_behaviour
     doorplate_sim)

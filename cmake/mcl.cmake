@@ -23,7 +23,9 @@ add_library(doorplate_mcl
   src/mcl/text_amcl_resample.cpp
   src/mcl/text_amcl_plate.cpp
   src/mcl/text_amcl_setup.cpp
-  src/mcl/text_amcl_session.cpp)
+  src/mcl/text_amcl_session.cpp
+  src/mcl/floor_belief.cpp
+  src/mcl/building_session.cpp)
 target_include_directories(doorplate_mcl PUBLIC include PRIVATE ${OpenCV_INCLUDE_DIRS})
 target_link_libraries(doorplate_mcl PUBLIC doorplate_common Eigen3::Eigen PRIVATE opencv_core opencv_imgproc)
 install(TARGETS doorplate_mcl LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
@@ -37,7 +39,7 @@ if(CATKIN_ENABLE_TESTING)
   foreach(name particle localization_scan localization_grid grid_ray_caster diff_drive_motion_model laser_model
                likelihood_field_model beam_model plate_reading text_match plate_likelihood_model plate_pose_sampler
                resampler pose_histogram kld_sampler pose_clusters augmented_mcl text_amcl text_amcl_resample
-               text_amcl_plate text_amcl_setup text_amcl_session)
+               text_amcl_plate text_amcl_setup text_amcl_session floor_belief building_session)
     # Targets prefixed mcl_: generic names (particle_test, resampler_test) would clash with other concerns.
     doorplate_add_core_test(mcl_${name}_test test/mcl/${name}_test.cpp doorplate_mcl)
   endforeach()

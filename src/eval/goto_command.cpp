@@ -1,13 +1,13 @@
 // `doorplate_eval goto`: go to a random room from a random corridor pose on a floor (issue 17), driven by
-// the Text AMCL estimate; a table of the trials and, with --json, the results as JSON.
+// the Text AMCL estimate, or to a room on another floor of a building by lift (--building); a table of the
+// trials and, with --json, the results as JSON.
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
 
 #include "doorplate_localization/maps/map_io.h"
-#include "doorplate_localization/maps/text_map.h"
-#include "doorplate_localization/sim/world_loader.h"
+#include "building_input.h"
 #include "eval_args.h"
 #include "eval_commands.h"
 #include "goto_eval.h"
@@ -20,8 +20,11 @@ constexpr double kDeg = 180.0 / M_PI;
 
 std::vector<OptionSpec> GotoOptions() {
   return {
-      {"world", "", "world file with `corridors` (worlds/*.yaml, docs/world-format.md)", true},
-      {"map", "", "text-map YAML (its occupancy_map names the grid) [<world dir>/../maps/<world name>.text_map.yaml]"},
+      {"world", "", "world file with `corridors` (worlds/*.yaml, docs/world-format.md); or --building"},
+      {"building", "", "building file of worlds (worlds/*.building.yaml): start on a random floor, go to a room on "
+                       "another floor by lift; the localizer finds the floor after the ride from the plates"},
+      {"map", "", "text-map YAML (its occupancy_map names the grid) [<world dir>/../maps/<world name>.text_map.yaml]; "
+                  "with --building the maps building file [<building dir>/../maps/<building name>.building.yaml]"},
       {"trials", "30", "number of trials (random start pose and room)"},
       {"seed", "1", "experiment seed; trial i runs with a seed derived from it"},
       {"first-trial", "0", "index of the first trial (to split a run: --first-trial 10 --trials 10 runs trials 10-19)"},
@@ -48,6 +51,15 @@ void PrintTable(const GotoEvalResult& r, const GotoEvalOptions& o) {
                 t.room.c_str(), t.plan_length_m, t.plan_seconds, t.distance_m, t.along_m, t.across_m,
                 t.yaw_error_rad * kDeg, t.travel_m, t.sim_seconds, t.estimate_error_m, t.replans,
                 t.success ? "SUCCESS " : "FAIL ", t.bumped ? "(bumped) " : "", t.outcome.c_str());
+    if (r.floors.size() > 1) {
+      std::printf("      floor %s -> %s: %s; %s", t.start_floor.c_str(), t.room_floor.c_str(), t.instruction.c_str(),
+                  t.rode ? "rode" : "did not ride");
+      if (t.rode) {
+        std::printf(" (%.2f m from the stop), searched %.1f m after the ride, %s", t.lift_stop_distance_m,
+                    t.searched_m, t.found_floor ? "localized on the room's floor" : "NOT localized on the room's floor");
+      }
+      std::printf("\n");
+    }
   }
   const GotoSummary s = Summarize(r);
   std::printf("  success %d/%d (arrived %d, bumped %d); distance to goal median %.3f m, max %.3f m; |yaw error| "
@@ -56,6 +68,11 @@ void PrintTable(const GotoEvalResult& r, const GotoEvalOptions& o) {
               s.successes, s.trials, s.arrived, s.bumped, s.median_distance_m, s.max_distance_m,
               s.median_abs_yaw_rad * kDeg, s.median_travel_m, s.median_sim_s, s.median_plan_s, s.max_plan_s,
               s.min_plan_clearance_m, s.median_estimate_error_m, r.seconds);
+  if (r.floors.size() > 1) {
+    std::printf("  building of %zu floors: %d rides, %d localized on the room's floor after the ride; search after "
+                "the ride median %.1f m, max %.1f m\n", r.floors.size(), s.rides, s.found_floor, s.median_searched_m,
+                s.max_searched_m);
+  }
 }
 
 void WritePose(JsonWriter* json, const std::string& key, const Pose2D& p) {
@@ -85,6 +102,10 @@ void WriteJson(const GotoEvalResult& r, const GotoEvalOptions& o, const std::str
   json->Field("median_plan_s", s.median_plan_s).Field("max_plan_s", s.max_plan_s);
   json->Field("min_plan_clearance_m", s.min_plan_clearance_m);
   json->Field("median_estimate_error_m", s.median_estimate_error_m).Field("seconds", r.seconds);
+  if (r.floors.size() > 1) {
+    json->Field("rides", s.rides).Field("found_floor", s.found_floor);
+    json->Field("median_searched_m", s.median_searched_m).Field("max_searched_m", s.max_searched_m);
+  }
   json->EndObject();
   json->Key("trials").BeginArray();
   for (const GotoTrial& t : r.trials) {
@@ -92,6 +113,12 @@ void WriteJson(const GotoEvalResult& r, const GotoEvalOptions& o, const std::str
     json->Field("index", t.index).Field("seed", t.seed);
     WritePose(json, "start", t.start_pose);
     json->Field("room", t.room);
+    if (r.floors.size() > 1) {
+      json->Field("start_floor", t.start_floor).Field("room_floor", t.room_floor).Field("lift", t.lift);
+      json->Field("instruction", t.instruction).Field("rode", t.rode);
+      json->Field("lift_stop_distance_m", t.lift_stop_distance_m).Field("searched_m", t.searched_m);
+      json->Field("found_floor", t.found_floor);
+    }
     WritePose(json, "goal", t.goal);
     json->Field("success", t.success).Field("arrived", t.arrived).Field("outcome", t.outcome);
     json->Field("plan_length_m", t.plan_length_m).Field("plan_seconds", t.plan_seconds);
@@ -146,21 +173,16 @@ int RunGotoCommand(const std::vector<std::string>& args, const std::string& comm
   }
 
   const std::string world_path = parsed.String("world");
-  const World world = LoadWorldFile(world_path);
-  const std::string map_path = parsed.String("map").empty() ? DefaultTextMapPath(world_path, world.name) : parsed.String("map");
-  auto text_map = std::make_shared<const TextMap>(LoadTextMap(map_path));
-  if (text_map->occupancy_map.empty()) {
-    throw std::runtime_error(map_path + ": occupancy_map is empty: the experiment needs the grid it names");
-  }
-  const std::filesystem::path grid_path = std::filesystem::path(map_path).parent_path() / text_map->occupancy_map;
-  const OccupancyGrid grid = LoadOccupancyMap(grid_path.string());
-
-  const GotoEvalResult result = RunGotoEval(world, grid, text_map, options);
+  const std::string building_path = parsed.String("building");
+  std::string map_path;
+  const LocalizeBuilding building =
+      LoadExperimentBuilding("goto", world_path, building_path, parsed.String("map"), &map_path);
+  const GotoEvalResult result = RunGotoEval(building, options);
   PrintTable(result, options);
   if (!json_path.empty()) {
     std::ostringstream out;
     JsonWriter json(&out);
-    WriteJson(result, options, world_path, map_path, command_line, &json);
+    WriteJson(result, options, building_path.empty() ? world_path : building_path, map_path, command_line, &json);
     out << "\n";
     WriteFileAtomically(json_path, out.str());
   }

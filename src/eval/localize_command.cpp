@@ -1,12 +1,12 @@
-// `doorplate_eval localize`: global localization and kidnapped-robot trials (paper Table III) on one world.
+// `doorplate_eval localize`: global localization and kidnapped-robot trials (paper Table III) on one world,
+// or on a building of several floors (--building).
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
 
 #include "doorplate_localization/maps/map_io.h"
-#include "doorplate_localization/maps/text_map.h"
-#include "doorplate_localization/sim/world_loader.h"
+#include "building_input.h"
 #include "eval_args.h"
 #include "eval_commands.h"
 #include "localize_eval.h"
@@ -17,8 +17,11 @@ namespace {
 
 std::vector<OptionSpec> LocalizeOptions() {
   return {
-      {"world", "", "world file (worlds/*.yaml, docs/world-format.md)", true},
-      {"map", "", "text-map YAML the filter uses (its occupancy_map names the grid) [<world dir>/../maps/<world name>.text_map.yaml]"},
+      {"world", "", "world file (worlds/*.yaml, docs/world-format.md); or --building"},
+      {"building", "", "building file of worlds (worlds/*.building.yaml, docs/building-format.md): trials start on a "
+                       "random floor the filter is not told, a kidnap is a ride to a random floor"},
+      {"map", "", "text-map YAML the filter uses (its occupancy_map names the grid) [<world dir>/../maps/<world name>.text_map.yaml]; "
+                  "with --building the maps building file [<building dir>/../maps/<building name>.building.yaml]"},
       {"method", "text_amcl", "amcl (laser only) or text_amcl (laser + doorplate readings)"},
       {"trials", "30", "number of trials (random start poses)"},
       {"seed", "1", "experiment seed; trial i runs with a seed derived from it"},
@@ -53,12 +56,19 @@ void PrintSummary(const LocalizeEvalResult& r, const LocalizeEvalOptions& o) {
   const LocalizeSummary s = Summarize(r);
   std::printf("world %s, %s, %d trial(s), seed %llu, drive %s%s\n", r.world_name.c_str(), ToString(r.method),
               s.trials, static_cast<unsigned long long>(o.seed), ToString(o.drive), r.kidnap ? ", kidnap" : "");
+  const bool building = r.floors.size() > 1;
   for (const LocalizeTrial& t : r.trials) {
-    std::printf("  trial %2d: start (%.2f, %.2f, %.0f deg) %s after %.1f m: error %.2f m %.1f deg, %d/%d plates used",
-                t.index, t.start_pose.x_m, t.start_pose.y_m, t.start_pose.theta_rad * 180.0 / M_PI,
+    std::printf("  trial %2d: ", t.index);
+    if (building) {
+      std::printf("floor %s (certain after %.1f m, fix on floor %s), ", t.start_floor.c_str(), t.floor_travel_m,
+                  t.fix.floor.c_str());
+    }
+    std::printf("start (%.2f, %.2f, %.0f deg) %s after %.1f m: error %.2f m %.1f deg, %d/%d plates used",
+                t.start_pose.x_m, t.start_pose.y_m, t.start_pose.theta_rad * 180.0 / M_PI,
                 t.Success() ? "SUCCESS" : t.converged ? "WRONG CONVERGENCE" : "not converged", t.fix.travel_m,
                 t.fix.error_m, t.fix.error_deg, t.plate_updates, t.plate_reports);
     if (t.kidnapped) {
+      if (building) std::printf("; kidnap to floor %s", t.kidnap_floor.c_str());
       std::printf("; kidnap to (%.2f, %.2f): %s after %.1f m%s", t.kidnap_pose.x_m, t.kidnap_pose.y_m,
                   t.recovered ? "recovered" : "NOT recovered", t.recovery.travel_m,
                   t.lost_detected ? (", lost detected (" + t.lost_reason + ")").c_str() : "");
@@ -70,6 +80,10 @@ void PrintSummary(const LocalizeEvalResult& r, const LocalizeEvalOptions& o) {
               s.successes, s.trials, 100.0 * s.success_rate, s.wrong_convergences, s.not_converged,
               s.not_converged_estimate_right, s.median_travel_m, s.longest_travel_m, s.median_final_error_m,
               s.median_final_error_deg);
+  if (building) {
+    std::printf("  building of %zu floors: converged on the wrong floor %d, median travel until the floor was certain "
+                "%.1f m\n", r.floors.size(), s.wrong_floor, s.median_floor_travel_m);
+  }
   if (r.kidnap) {
     std::printf("  kidnap: recovered %d/%d = %.1f %%, median recovery travel %.1f m, lost detected %d\n", s.recoveries,
                 s.kidnaps, 100.0 * s.recovery_rate, s.median_recovery_travel_m, s.kidnap_lost_detected);
@@ -125,28 +139,26 @@ int RunLocalizeCommand(const std::vector<std::string>& args, const std::string& 
   }
 
   const std::string world_path = parsed.String("world");
-  const World world = LoadWorldFile(world_path);
+  const std::string building_path = parsed.String("building");
+  std::string map_path;
+  const LocalizeBuilding building =
+      LoadExperimentBuilding("localize", world_path, building_path, parsed.String("map"), &map_path);
   const std::string drive = parsed.String("drive");
   try {
-    options.drive = drive == "auto" ? (world.corridors.size() > 1 ? LocalizeDrive::kContour : LocalizeDrive::kPatrol)
+    options.drive = drive == "auto" ? (building.worlds.front().corridors.size() > 1 ? LocalizeDrive::kContour
+                                                                                    : LocalizeDrive::kPatrol)
                                     : ParseLocalizeDrive(drive);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("localize: --drive: ") + e.what() + " (or auto)");
   }
-  const std::string map_path = parsed.String("map").empty() ? DefaultTextMapPath(world_path, world.name) : parsed.String("map");
-  auto text_map = std::make_shared<const TextMap>(LoadTextMap(map_path));
-  if (text_map->occupancy_map.empty()) {
-    throw std::runtime_error(map_path + ": occupancy_map is empty: the experiment needs the grid it names");
-  }
-  const std::filesystem::path grid_path = std::filesystem::path(map_path).parent_path() / text_map->occupancy_map;
-  const OccupancyGrid grid = LoadOccupancyMap(grid_path.string());
 
-  const LocalizeEvalResult result = RunLocalizeEval(world, grid, text_map, grid, options);
+  const LocalizeEvalResult result = RunLocalizeEval(building, options);
   PrintSummary(result, options);
   if (!json_path.empty()) {
     std::ostringstream out;
     JsonWriter json(&out);
-    WriteLocalizeEvalJson(result, {world_path, map_path, command_line, options}, &json);
+    WriteLocalizeEvalJson(result, {building_path.empty() ? world_path : building_path, map_path, command_line, options},
+                          &json);
     out << "\n";
     WriteFileAtomically(json_path, out.str());
   }

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "doorplate_localization/mcl/text_amcl_session.h"
+#include "doorplate_localization/mcl/building_session.h"
 #include "doorplate_localization/sim/simulator.h"
 #include "eval_args.h"
 #include "localize_sensors.h"
@@ -34,26 +34,34 @@ void Validate(const LocalizeEvalOptions& o, bool has_text_map) {
 // One trial's simulation: the robot, its search behaviour, the filter and (text_amcl) the reader.
 class TrialRun {
  public:
-  TrialRun(const World& world, const OccupancyGrid& grid, std::shared_ptr<const TextMap> text_map,
-           const StartPoseSampler& poses, const LocalizeEvalOptions& options, int index)
-      : options_(options), poses_(poses), seed_(PassSeed(options.seed, index)), rng_(seed_),
-        sim_(world, SimOptions(seed_)), sweep_(SweepOptions(options)), contour_(ContourOptions(options)) {
+  TrialRun(const LocalizeBuilding& building, const std::vector<StartPoseSampler>& poses,
+           const LocalizeEvalOptions& options, int index)
+      : building_(building), options_(options), poses_(poses), seed_(PassSeed(options.seed, index)), rng_(seed_),
+        floor_(DrawFloor()), sim_(building.worlds[static_cast<size_t>(floor_)], SimOptions(seed_)),
+        sweep_(SweepOptions(options)), contour_(ContourOptions(options)) {
     trial_.index = index;
     trial_.seed = seed_;
-    trial_.start_pose = poses_.Sample(rng_);
+    trial_.start_pose = poses_[static_cast<size_t>(floor_)].Sample(rng_);
+    trial_.start_floor = FloorId(floor_);
     sim_.Teleport(trial_.start_pose);
-    TextAmclSessionOptions session;
-    session.setup = options.filter;
-    session.setup.filter.random_seed = seed_;
-    session.setup.use_text = options.method == LocalizeMethod::kTextAmcl;
-    session.start_with_global_localization = true;
-    session_ = std::make_unique<TextAmclSession>(session, grid, session.setup.use_text ? text_map : nullptr);
-    if (session.setup.use_text) {
+    BuildingSessionOptions session;
+    session.session.setup = options.filter;
+    session.session.setup.filter.random_seed = seed_;
+    session.session.setup.use_text = options.method == LocalizeMethod::kTextAmcl;
+    session.session.start_with_global_localization = true;
+    session_ = std::make_unique<BuildingSession>(session, SessionMaps(building, session.session.setup.use_text));
+    if (session.session.setup.use_text) {
       TextExtractorOptions extractor = options.extractor;
       extractor.tracker.fx_px = sim_.camera().intrinsics().fx_px;
       extractor.tracker.cx_px = sim_.camera().intrinsics().cx_px;
-      extractor.validator.pattern = text_map->room_pattern;  // the building's identifier format
-      if (options.known_rooms) extractor.validator.known_rooms = text_map->Texts();
+      // The building's identifier format (the first floor's; a building has one) and its rooms.
+      extractor.validator.pattern = building.maps->floors.front().text_map->room_pattern;
+      if (options.known_rooms) {
+        for (const FloorMaps& floor : building.maps->floors) {
+          const std::vector<std::string> texts = floor.text_map->Texts();
+          extractor.validator.known_rooms.insert(extractor.validator.known_rooms.end(), texts.begin(), texts.end());
+        }
+      }
       extractor_ = std::make_unique<TextExtractor>(extractor);
       double x = 0, y = 0, z = 0, pitch = 0;
       sim_.camera().MountPose(&x, &y, &z, &camera_yaw_rad_, &pitch);
@@ -92,6 +100,21 @@ class TrialRun {
   }
 
  private:
+  // A floor uniformly at random; nothing drawn in a one-floor building (its trials stay draw for draw).
+  int DrawFloor() {
+    const int floors = static_cast<int>(building_.worlds.size());
+    if (floors == 1) return 0;
+    return std::uniform_int_distribution<int>(0, floors - 1)(rng_);
+  }
+  const std::string& FloorId(int floor) const { return building_.maps->floors[static_cast<size_t>(floor)].id; }
+  // The maps the session gets: laser only (amcl) drops the text maps.
+  static std::shared_ptr<const BuildingMaps> SessionMaps(const LocalizeBuilding& building, bool use_text) {
+    if (use_text) return building.maps;
+    auto maps = std::make_shared<BuildingMaps>(*building.maps);
+    for (FloorMaps& floor : maps->floors) floor.text_map = nullptr;
+    return maps;
+  }
+
   static SimulatorOptions SimOptions(std::uint64_t seed) {
     SimulatorOptions o;
     o.seed = seed;
@@ -149,15 +172,22 @@ class TrialRun {
     fix.sim_time_s = sim_.time_s() - search_start_time_s_;
     fix.truth = sim_.true_pose();
     fix.estimate = session_->PoseAtOdometry(sim_.odom_pose());
+    fix.floor = session_->floor_id();
+    fix.true_floor = FloorId(floor_);
     fix.error_m = std::hypot(fix.estimate.x_m - fix.truth.x_m, fix.estimate.y_m - fix.truth.y_m);
     const double angle = std::fabs(NormalizeAngle(fix.estimate.theta_rad - fix.truth.theta_rad));
     fix.error_deg = angle * 180.0 / M_PI;
-    fix.within_tolerance = fix.error_m <= options_.success_distance_m && angle <= options_.success_angle_rad;
+    fix.within_tolerance = fix.floor == fix.true_floor && fix.error_m <= options_.success_distance_m &&
+                           angle <= options_.success_angle_rad;
     return fix;
   }
 
   // Convergence (and, after a kidnap, loss and recovery) checks. Returns true when the trial is over.
   bool CheckState() {
+    if (building_.worlds.size() > 1 && session_->floor_certain() && session_->floor() == floor_) {
+      double& floor_travel = trial_.kidnapped ? trial_.kidnap_floor_travel_m : trial_.floor_travel_m;
+      if (floor_travel < 0.0) floor_travel = sim_.distance_travelled_m() - search_start_travel_m_;
+    }
     const LocalizationState state = session_->Status().state;
     if (!trial_.kidnapped) {
       if (state != LocalizationState::kConverged) return false;
@@ -182,22 +212,32 @@ class TrialRun {
 
   void Kidnap() {
     trial_.kidnapped = true;
-    trial_.kidnap_pose = poses_.SampleAwayFrom(sim_.true_pose(), rng_);
-    sim_.Teleport(trial_.kidnap_pose);
+    const int floor = DrawFloor();
+    if (floor == floor_) {
+      trial_.kidnap_pose = poses_[static_cast<size_t>(floor)].SampleAwayFrom(sim_.true_pose(), rng_);
+      sim_.Teleport(trial_.kidnap_pose);
+    } else {  // a lift ride
+      floor_ = floor;
+      trial_.kidnap_pose = poses_[static_cast<size_t>(floor)].Sample(rng_);
+      sim_.ChangeWorld(building_.worlds[static_cast<size_t>(floor)], trial_.kidnap_pose);
+    }
+    trial_.kidnap_floor = FloorId(floor_);
     sweep_.Reset();
     if (extractor_) extractor_->Reset();
     search_start_travel_m_ = sim_.distance_travelled_m();
     search_start_time_s_ = sim_.time_s();
   }
 
+  const LocalizeBuilding& building_;
   const LocalizeEvalOptions& options_;
-  const StartPoseSampler& poses_;
+  const std::vector<StartPoseSampler>& poses_;
   const std::uint64_t seed_;
   std::mt19937_64 rng_;
+  int floor_;  // the floor the robot is on (index into building_.worlds)
   Simulator sim_;
   CorridorSweep sweep_;
   const ContourSteering contour_;
-  std::unique_ptr<TextAmclSession> session_;
+  std::unique_ptr<BuildingSession> session_;
   std::unique_ptr<TextExtractor> extractor_;
   double camera_yaw_rad_ = 0.0;
   LocalizationScan last_scan_;  // the drive steers on it
@@ -220,11 +260,13 @@ LocalizeDrive ParseLocalizeDrive(const std::string& name) {
 
 LocalizeSummary Summarize(const LocalizeEvalResult& result) {
   LocalizeSummary s;
-  std::vector<double> travel, error_m, error_deg, recovery_travel;
+  std::vector<double> travel, error_m, error_deg, recovery_travel, floor_travel;
   for (const LocalizeTrial& t : result.trials) {
     ++s.trials;
     if (t.Success()) ++s.successes;
     if (t.WrongConvergence()) ++s.wrong_convergences;
+    if (t.converged && t.fix.floor != t.fix.true_floor) ++s.wrong_floor;
+    if (t.floor_travel_m >= 0.0) floor_travel.push_back(t.floor_travel_m);
     if (!t.converged) ++s.not_converged;
     if (!t.converged && t.fix.within_tolerance) ++s.not_converged_estimate_right;
     if (t.converged) {
@@ -246,26 +288,53 @@ LocalizeSummary Summarize(const LocalizeEvalResult& result) {
   s.median_final_error_m = Median(error_m);
   s.median_final_error_deg = Median(error_deg);
   s.median_recovery_travel_m = Median(recovery_travel);
+  s.median_floor_travel_m = Median(floor_travel);
   return s;
 }
 
 LocalizeEvalResult RunLocalizeEval(const World& world, const OccupancyGrid& grid,
                                    std::shared_ptr<const TextMap> text_map, const OccupancyGrid& ground_truth_grid,
                                    const LocalizeEvalOptions& options) {
-  Validate(options, text_map != nullptr);
+  LocalizeBuilding building;
+  building.name = world.name;
+  building.worlds = {world};
+  auto maps = std::make_shared<BuildingMaps>();
+  maps->name = world.name;
+  maps->floors.push_back({world.name, grid, std::move(text_map)});
+  building.maps = maps;
+  building.ground_truth_grids = {ground_truth_grid};
+  return RunLocalizeEval(building, options);
+}
+
+LocalizeEvalResult RunLocalizeEval(const LocalizeBuilding& building, const LocalizeEvalOptions& options) {
+  const size_t floors = building.worlds.size();
+  if (floors == 0 || !building.maps || building.maps->floors.size() != floors ||
+      building.ground_truth_grids.size() != floors) {
+    throw std::invalid_argument("LocalizeBuilding: needs one world, one floor of maps and one ground-truth grid per "
+                                "floor (got " + std::to_string(floors) + " worlds)");
+  }
+  bool has_text_maps = true;
+  for (const FloorMaps& floor : building.maps->floors) has_text_maps = has_text_maps && floor.text_map != nullptr;
+  Validate(options, has_text_maps);
   const Clock::time_point start = Clock::now();
-  World run_world = world;
-  if (options.camera_rate_hz > 0.0) run_world.sensors.camera.rate_hz = options.camera_rate_hz;
-  BuildSurfaces(run_world);
-  const StartPoseSampler poses = MakeStartPoseSampler(run_world, ground_truth_grid, options.poses);
+  LocalizeBuilding run = building;
+  std::vector<StartPoseSampler> poses;
+  poses.reserve(floors);
+  for (size_t f = 0; f < floors; ++f) {
+    World& world = run.worlds[f];
+    if (options.camera_rate_hz > 0.0) world.sensors.camera.rate_hz = options.camera_rate_hz;
+    BuildSurfaces(world);
+    poses.push_back(MakeStartPoseSampler(world, run.ground_truth_grids[f], options.poses));
+  }
   LocalizeEvalResult result;
-  result.world_name = world.name;
+  result.world_name = building.name;
   result.method = options.method;
   result.kidnap = options.kidnap;
-  result.floor_start_poses = poses.on_floor();
+  result.floor_start_poses = poses.front().on_floor();
+  for (const FloorMaps& floor : building.maps->floors) result.floors.push_back(floor.id);
   for (int i = 0; i < options.trials; ++i) {
-    TrialRun run(run_world, grid, text_map, poses, options, i);
-    result.trials.push_back(run.Run());
+    TrialRun trial(run, poses, options, i);
+    result.trials.push_back(trial.Run());
   }
   result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return result;

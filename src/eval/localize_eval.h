@@ -20,6 +20,12 @@
 // corridor pose (odometry does not see it), the filter is left alone and the robot keeps searching; it
 // recovers when the filter is kConverged with the estimate within the success tolerance of the truth before
 // it has driven max_travel_m more.
+// Buildings of several floors (issue 17 item 5; LocalizeBuilding): each trial starts on a floor drawn
+// uniformly (then a pose on it as above), the filter is a BuildingSession (mcl/building_session.h) that
+// does not know the floor: the plates pick it. A kidnap is a lift ride: a floor drawn uniformly (the same
+// one again or another; the simulator's ChangeWorld), a pose on it. A fix is within tolerance only on the
+// right floor. With one floor (every Table III world) nothing is drawn for the floor and the
+// BuildingSession is its TextAmclSession: the trials are those of before, draw for draw.
 // Deterministic for a given seed (trial i uses PassSeed(seed, i) for the simulator, the poses and the
 // filter), except the timings.
 #pragma once
@@ -31,6 +37,7 @@
 
 #include "doorplate_localization/behaviour/contour_steering.h"
 #include "doorplate_localization/behaviour/corridor_sweep.h"
+#include "doorplate_localization/maps/building_map.h"
 #include "doorplate_localization/maps/occupancy_grid.h"
 #include "doorplate_localization/maps/text_map.h"
 #include "doorplate_localization/mcl/text_amcl_setup.h"
@@ -76,15 +83,21 @@ struct LocalizeFix {
   double sim_time_s = 0.0;
   Pose2D estimate;             // map frame, carried to this moment by odometry
   Pose2D truth;
+  std::string floor;           // the filter's current floor (BuildingFloor id)
+  std::string true_floor;
   double error_m = 0.0;
   double error_deg = 0.0;      // |heading error|
-  bool within_tolerance = false;
+  bool within_tolerance = false;  // the right floor, and the pose within the success tolerance
 };
 
 struct LocalizeTrial {
   int index = 0;
   std::uint64_t seed = 0;
   Pose2D start_pose;
+  std::string start_floor;
+  // Travel until the filter was first certain of the true floor (FloorBelief), −1 if never; buildings of
+  // several floors only (after a kidnap: kidnap_floor_travel_m).
+  double floor_travel_m = -1.0;
   bool converged = false;      // reached kConverged within max_travel_m
   LocalizeFix fix;             // at convergence, or at the end of the search if it never converged
   int plate_reports = 0;       // reports of the text extractor during the whole trial (search and recovery)
@@ -93,6 +106,8 @@ struct LocalizeTrial {
   // Kidnap (only when kidnap = true and the first convergence succeeded).
   bool kidnapped = false;
   Pose2D kidnap_pose;
+  std::string kidnap_floor;
+  double kidnap_floor_travel_m = -1.0;
   bool lost_detected = false;  // the filter entered kLost after the kidnap
   double lost_detected_travel_m = 0.0;
   std::string lost_reason;     // LostReason of the first kLost after the kidnap
@@ -110,6 +125,7 @@ struct LocalizeEvalResult {
   LocalizeMethod method = LocalizeMethod::kTextAmcl;
   bool kidnap = false;
   bool floor_start_poses = false;  // poses drawn over the world's corridors (else the main corridor band)
+  std::vector<std::string> floors; // the building's floor ids (one for a world)
   std::vector<LocalizeTrial> trials;
   double seconds = 0.0;  // wall clock, whole run
 };
@@ -118,6 +134,8 @@ struct LocalizeEvalResult {
 // wrong convergences), recovery travel over the recovered trials; 0 when there are none.
 struct LocalizeSummary {
   int trials = 0, successes = 0, wrong_convergences = 0, not_converged = 0;
+  int wrong_floor = 0;  // converged on another floor than the robot's (counted in wrong_convergences)
+  double median_floor_travel_m = 0.0;  // over trials whose floor became certain (buildings only)
   // Of the not converged trials, those whose heaviest cluster was nevertheless within the tolerance at the
   // end of the search (a laser-only filter in a symmetric corridor: a coin toss between mirror images).
   int not_converged_estimate_right = 0;
@@ -137,5 +155,16 @@ LocalizeSummary Summarize(const LocalizeEvalResult& result);
 LocalizeEvalResult RunLocalizeEval(const World& world, const OccupancyGrid& grid,
                                    std::shared_ptr<const TextMap> text_map, const OccupancyGrid& ground_truth_grid,
                                    const LocalizeEvalOptions& options);
+
+// A building to run the trials in: one simulator world per floor, index-aligned with maps->floors (the
+// maps the filter knows; text maps required for text_amcl), and per floor the ground-truth grid that
+// rejects start poses near obstacles.
+struct LocalizeBuilding {
+  std::string name;
+  std::vector<World> worlds;
+  std::shared_ptr<const BuildingMaps> maps;
+  std::vector<OccupancyGrid> ground_truth_grids;
+};
+LocalizeEvalResult RunLocalizeEval(const LocalizeBuilding& building, const LocalizeEvalOptions& options);
 
 }  // namespace doorplate_localization

@@ -9,29 +9,33 @@ void WritePose(const std::string& key, const Pose2D& pose, JsonWriter* json) {
   json->Key(key).BeginArray().Value(pose.x_m).Value(pose.y_m).Value(pose.theta_rad).EndArray();
 }
 
-void WriteFix(const std::string& key, const LocalizeFix& fix, JsonWriter* json) {
+// `building`: a building of several floors; its fixes and trials also name the floors.
+void WriteFix(const std::string& key, const LocalizeFix& fix, bool building, JsonWriter* json) {
   json->Key(key).BeginObject().Field("travel_m", fix.travel_m).Field("sim_time_s", fix.sim_time_s);
+  if (building) json->Field("floor", fix.floor).Field("true_floor", fix.true_floor);
   WritePose("estimate", fix.estimate, json);
   WritePose("truth", fix.truth, json);
   json->Field("error_m", fix.error_m).Field("error_deg", fix.error_deg).Field("within_tolerance", fix.within_tolerance);
   json->EndObject();
 }
 
-void WriteTrial(const LocalizeTrial& t, bool kidnap, JsonWriter* json) {
+void WriteTrial(const LocalizeTrial& t, bool kidnap, bool building, JsonWriter* json) {
   json->BeginObject().Field("index", t.index).Field("seed", t.seed);
   WritePose("start_pose", t.start_pose, json);
+  if (building) json->Field("start_floor", t.start_floor).Field("floor_travel_m", t.floor_travel_m);
   json->Field("converged", t.converged).Field("success", t.Success()).Field("wrong_convergence", t.WrongConvergence());
-  WriteFix(t.converged ? "convergence" : "end_of_search", t.fix, json);
+  WriteFix(t.converged ? "convergence" : "end_of_search", t.fix, building, json);
   json->Field("plate_reports", t.plate_reports).Field("plate_updates", t.plate_updates).Field("laser_updates",
                                                                                               t.laser_updates);
   if (kidnap) {
     json->Field("kidnapped", t.kidnapped);
     if (t.kidnapped) {
       WritePose("kidnap_pose", t.kidnap_pose, json);
+      if (building) json->Field("kidnap_floor", t.kidnap_floor).Field("kidnap_floor_travel_m", t.kidnap_floor_travel_m);
       json->Field("lost_detected", t.lost_detected);
       if (t.lost_detected) json->Field("lost_detected_travel_m", t.lost_detected_travel_m).Field("lost_reason", t.lost_reason);
       json->Field("recovered", t.recovered);
-      WriteFix(t.recovered ? "recovery" : "end_of_kidnap_search", t.recovery, json);
+      WriteFix(t.recovered ? "recovery" : "end_of_kidnap_search", t.recovery, building, json);
     }
   }
   json->Field("sim_seconds", t.sim_seconds).Field("seconds", t.wall_seconds).EndObject();
@@ -93,10 +97,16 @@ void WriteLocalizeEvalJson(const LocalizeEvalResult& r, const LocalizeEvalRunInf
         .Field("kidnap_lost_detected", s.kidnap_lost_detected)
         .Field("median_recovery_travel_m", s.median_recovery_travel_m);
   }
+  const bool building = r.floors.size() > 1;
+  if (building) {
+    json->Key("floors").BeginArray();
+    for (const std::string& id : r.floors) json->Value(id);
+    json->EndArray().Field("wrong_floor", s.wrong_floor).Field("median_floor_travel_m", s.median_floor_travel_m);
+  }
   json->Field("seconds", r.seconds);
   WriteOptions(info.options, r.floor_start_poses, json);
   json->Key("per_trial").BeginArray();
-  for (const LocalizeTrial& t : r.trials) WriteTrial(t, r.kidnap, json);
+  for (const LocalizeTrial& t : r.trials) WriteTrial(t, r.kidnap, building, json);
   json->EndArray().EndObject();
 }
 

@@ -25,18 +25,12 @@ PlateReading ToPlateReading(const PlateReport& report, double camera_yaw_rad) {
   return reading;
 }
 
-CameraFeed FeedCameraFrame(Simulator& sim, TextExtractor& extractor, double camera_yaw_rad, TextAmclSession& session) {
-  CameraFeed feed;
-  const std::vector<PlateReport> reports = extractor.Process(sim.CameraImage(), sim.time_s());
-  if (reports.empty()) return feed;
+std::vector<PlateReading> ReadCameraFrame(Simulator& sim, TextExtractor& extractor, double camera_yaw_rad) {
   std::vector<PlateReading> readings;
-  for (const PlateReport& report : reports) readings.push_back(ToPlateReading(report, camera_yaw_rad));
-  feed.reports = static_cast<int>(reports.size());
-  session.AddOdometry(sim.time_s(), sim.odom_pose());
-  for (const PlateReadingOutcome& p : session.AddPlates(sim.time_s(), readings).plates) {
-    if (p.disposition == PlateDisposition::kWeighed && p.result.used) ++feed.plate_updates;
+  for (const PlateReport& report : extractor.Process(sim.CameraImage(), sim.time_s())) {
+    readings.push_back(ToPlateReading(report, camera_yaw_rad));
   }
-  return feed;
+  return readings;
 }
 
 }  // namespace doorplate_localization

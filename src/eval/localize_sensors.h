@@ -6,6 +6,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "doorplate_localization/mcl/localization_scan.h"
 #include "doorplate_localization/mcl/plate_reading.h"
@@ -28,13 +29,27 @@ LocalizationScan ToLocalizationScan(const SimulatedScan& scan, const LaserOption
 // taken as base_link's origin (as above).
 PlateReading ToPlateReading(const PlateReport& report, double camera_yaw_rad);
 
-// One camera image of `sim` through `extractor`; its reports, as readings (ToPlateReading), go to `session`
+// One camera image of `sim` through `extractor`: its plate reports as readings (ToPlateReading).
+std::vector<PlateReading> ReadCameraFrame(Simulator& sim, TextExtractor& extractor, double camera_yaw_rad);
+
+// One camera image's readings (ReadCameraFrame) go to `session` (a TextAmclSession or a BuildingSession)
 // with the odometry of this moment (the session measures their range and weighs them). The experiments'
 // one camera input (localize, goto), as the nodelet's OnDetections is the user's.
 struct CameraFeed {
   int reports = 0;       // plate reports of this image
   int plate_updates = 0; // of them, readings the filter weighed and used
 };
-CameraFeed FeedCameraFrame(Simulator& sim, TextExtractor& extractor, double camera_yaw_rad, TextAmclSession& session);
+template <class Session>
+CameraFeed FeedCameraFrame(Simulator& sim, TextExtractor& extractor, double camera_yaw_rad, Session& session) {
+  CameraFeed feed;
+  const std::vector<PlateReading> readings = ReadCameraFrame(sim, extractor, camera_yaw_rad);
+  if (readings.empty()) return feed;
+  feed.reports = static_cast<int>(readings.size());
+  session.AddOdometry(sim.time_s(), sim.odom_pose());
+  for (const PlateReadingOutcome& p : session.AddPlates(sim.time_s(), readings).plates) {
+    if (p.disposition == PlateDisposition::kWeighed && p.result.used) ++feed.plate_updates;
+  }
+  return feed;
+}
 
 }  // namespace doorplate_localization

@@ -72,6 +72,15 @@ void Simulator::Step() {
 
 void Simulator::Teleport(const Pose2D& pose) { true_pose_ = pose; }
 
+void Simulator::ChangeWorld(World floor_world, const Pose2D& pose) {
+  world_ = std::move(floor_world);
+  if (world_.surfaces.empty()) BuildSurfaces(world_);
+  camera_ = std::make_unique<CameraRenderer>(world_, world_.sensors.camera);
+  true_pose_ = pose;
+  linear_mps_ = angular_rps_ = 0.0;
+  bumped_ = false;
+}
+
 SimulatedScan Simulator::Scan() { return laser_.Simulate(world_, true_pose_, laser_rng_); }
 
 cv::Mat Simulator::CameraImage() {

@@ -1,15 +1,20 @@
 // doorplate_world_maps: writes the ground-truth maps of a world file: BASE.pgm + BASE.yaml (map_server
-// occupancy map at the laser's mount height) and BASE.text_map.yaml (its doorplates, naming BASE.yaml).
+// occupancy map at the laser's mount height) and BASE.text_map.yaml (its doorplates, naming BASE.yaml);
+// or those of every floor of a building file (docs/building-format.md) and the building file of the maps.
 // The maps of the built-in worlds are in maps/.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
+#include <map>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "cli_args.h"
 #include "map_tool_output.h"
+#include "doorplate_localization/maps/building_map.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/sim/ground_truth_maps.h"
 #include "doorplate_localization/sim/world_loader.h"
@@ -20,11 +25,15 @@ namespace {
 
 const char kUsage[] =
     "usage: doorplate_world_maps --world FILE --out BASE [--resolution 0.05] [--laser-height H_M]\n"
-    "  Writes BASE.pgm, BASE.yaml and BASE.text_map.yaml. --resolution is metres per cell; the laser\n"
-    "  height (default: the world's laser mount height) picks which surfaces are obstacles.\n";
+    "       doorplate_world_maps --building FILE --out DIR [--resolution 0.05] [--laser-height H_M]\n"
+    "  --world: writes BASE.pgm, BASE.yaml and BASE.text_map.yaml. --building (docs/building-format.md):\n"
+    "  writes DIR/<world name>.{pgm,yaml,text_map.yaml} for every floor with a world, then\n"
+    "  DIR/<building name>.building.yaml naming those maps (floors without a world keep their maps) and\n"
+    "  the same lifts, each stop checked to be on a free cell. --resolution is metres per cell; the laser\n"
+    "  height (default: each world's laser mount height) picks which surfaces are obstacles.\n";
 
 struct Args {
-  std::string world, out;
+  std::string world, building, out;
   double resolution_m = 0.05;
   double laser_height_m = NAN;  // NaN: the world's laser mount height
 };
@@ -36,12 +45,13 @@ Args ParseArgs(int argc, char** argv) {
   Args args;
   tools::ForEachOptionValue(argc, argv, kUsage, [&](const std::string& option, const std::string& value) {
     if (option == "--world") args.world = value;
+    else if (option == "--building") args.building = value;
     else if (option == "--out") args.out = value;
     else if (option == "--resolution") args.resolution_m = tools::ParsePositiveNumber(option, value);
     else if (option == "--laser-height") args.laser_height_m = tools::ParsePositiveNumber(option, value);
     else throw UsageError("unknown option '" + option + "'");
   });
-  if (args.world.empty()) throw UsageError("--world is required");
+  if (args.world.empty() == args.building.empty()) throw UsageError("give one of --world and --building");
   if (args.out.empty()) throw UsageError("--out is required");
   return args;
 }
@@ -50,19 +60,91 @@ int Count(const dl::OccupancyGrid& grid, std::int8_t value) {
   return static_cast<int>(std::count(grid.cells.begin(), grid.cells.end(), value));
 }
 
-int Run(const Args& args) {
-  const dl::World world = dl::LoadWorldFile(args.world);
-  const double laser_height_m =
-      std::isnan(args.laser_height_m) ? world.sensors.laser.mount_height_m : args.laser_height_m;
-  const dl::OccupancyGrid grid = dl::RasterizeWorld(world, args.resolution_m, laser_height_m);
-  const dl::TextMap text_map = dl::GroundTruthTextMap(world);
-  tools::SaveMapPair(grid, text_map, args.out);
-  std::cout << args.out << ".{pgm,yaml}: " << grid.width << " x " << grid.height << " cells at "
-            << grid.resolution_m << " m, laser height " << laser_height_m << " m: "
+// A world's ground-truth maps, at the laser height of the arguments (or the world's).
+struct WorldMaps {
+  dl::OccupancyGrid grid;
+  dl::TextMap text_map;
+  double laser_height_m = 0.0;
+};
+
+WorldMaps MakeWorldMaps(const dl::World& world, const Args& args) {
+  WorldMaps maps;
+  maps.laser_height_m = std::isnan(args.laser_height_m) ? world.sensors.laser.mount_height_m : args.laser_height_m;
+  maps.grid = dl::RasterizeWorld(world, args.resolution_m, maps.laser_height_m);
+  maps.text_map = dl::GroundTruthTextMap(world);
+  return maps;
+}
+
+void SaveWorldMaps(const WorldMaps& maps, const std::string& base) {
+  tools::SaveMapPair(maps.grid, maps.text_map, base);
+  const dl::OccupancyGrid& grid = maps.grid;
+  std::cout << base << ".{pgm,yaml}: " << grid.width << " x " << grid.height << " cells at "
+            << grid.resolution_m << " m, laser height " << maps.laser_height_m << " m: "
             << Count(grid, dl::OccupancyGrid::kFree) << " free, " << Count(grid, dl::OccupancyGrid::kOccupied)
             << " occupied\n"
-            << args.out << ".text_map.yaml: " << text_map.landmarks.size() << " plates, "
-            << text_map.adjacent.size() << " adjacent pairs\n";
+            << base << ".text_map.yaml: " << maps.text_map.landmarks.size() << " plates, "
+            << maps.text_map.adjacent.size() << " adjacent pairs\n";
+}
+
+// --building: every floor's maps made (from its world) or loaded (its map pair) and validated with the
+// lifts before anything is written; then the maps of the worlds and the building file of the maps.
+int RunBuilding(const Args& args) {
+  namespace fs = std::filesystem;
+  const dl::BuildingFile building = dl::LoadBuildingFile(args.building);
+  dl::BuildingFile out = building;
+  dl::BuildingMaps truth;
+  truth.name = building.name;
+  truth.lifts = building.lifts;
+  std::vector<std::pair<WorldMaps, std::string>> to_save;  // maps and their base path
+  std::map<std::string, std::string> floor_of_world;       // world name -> floor id
+  for (size_t i = 0; i < out.floors.size(); ++i) {
+    dl::BuildingFloor& floor = out.floors[i];
+    const std::string at = args.building + ": floors[" + std::to_string(i) + "] (id '" + floor.id + "'): ";
+    dl::FloorMaps floor_maps;
+    floor_maps.id = floor.id;
+    if (floor.world.empty()) {  // no world: its map pair is kept as it is
+      if (floor.occupancy_map.empty() || floor.text_map.empty()) {
+        throw std::runtime_error(at + "needs a world, or an occupancy_map and a text_map");
+      }
+      try {
+        floor_maps.grid = dl::LoadOccupancyMap(floor.occupancy_map);
+        floor_maps.text_map = std::make_shared<const dl::TextMap>(dl::LoadTextMap(floor.text_map));
+      } catch (const std::runtime_error& e) {
+        throw std::runtime_error(at + e.what());
+      }
+    } else {
+      dl::World world;
+      try {
+        world = dl::LoadWorldFile(floor.world);
+      } catch (const std::runtime_error& e) {
+        throw std::runtime_error(at + e.what());
+      }
+      const auto [other, fresh] = floor_of_world.emplace(world.name, floor.id);
+      if (!fresh) {
+        throw std::runtime_error(at + "its world's name '" + world.name + "' is also floor '" + other->second +
+                                 "''s: their maps would overwrite each other");
+      }
+      const std::string base = (fs::path(args.out) / world.name).string();
+      WorldMaps maps = MakeWorldMaps(world, args);
+      floor_maps.grid = maps.grid;
+      floor_maps.text_map = std::make_shared<const dl::TextMap>(maps.text_map);
+      to_save.emplace_back(std::move(maps), base);
+      floor = {floor.id, base + ".yaml", base + ".text_map.yaml", ""};
+    }
+    truth.floors.push_back(std::move(floor_maps));
+  }
+  dl::ValidateBuildingMaps(truth, args.building);
+  fs::create_directories(args.out);
+  for (const auto& [maps, base] : to_save) SaveWorldMaps(maps, base);
+  const std::string path = (fs::path(args.out) / (building.name + ".building.yaml")).string();
+  dl::SaveBuildingFile(out, path);
+  std::cout << path << ": " << out.floors.size() << " floors, " << out.lifts.size() << " lifts\n";
+  return 0;
+}
+
+int Run(const Args& args) {
+  if (!args.building.empty()) return RunBuilding(args);
+  SaveWorldMaps(MakeWorldMaps(dl::LoadWorldFile(args.world), args), args.out);
   return 0;
 }
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "../sim/test_worlds.h"
+#include "eval_test_worlds.h"
 #include "doorplate_localization/sim/ground_truth_maps.h"
 
 namespace doorplate_localization {
@@ -54,6 +55,27 @@ TEST(GotoEval, ArrivesAtRandomRoomsOfAnLFloorFromRandomCorridorPoses) {
   const GotoSummary s = Summarize(r);
   EXPECT_EQ(s.successes, 3);
   EXPECT_EQ(s.trials, 3);
+}
+
+TEST(GotoEval, InABuildingTheRobotTakesTheLiftNamedAndFindsTheRoomsFloorByItsPlates) {
+  const test::TwoFloorBuilding b = test::MakeTwoFloorBuilding();
+  GotoEvalOptions options;
+  options.trials = 1;
+  options.seed = 4;
+  options.camera_rate_hz = 8.0;
+  options.filter.filter.max_particles = 2000;
+  const GotoEvalResult r = RunGotoEval(LocalizeBuilding{"two_floor_test", b.worlds, b.maps, b.grids}, options);
+  ASSERT_EQ(r.trials.size(), 1u);
+  const GotoTrial& t = r.trials[0];
+  EXPECT_NE(t.start_floor, t.room_floor);
+  EXPECT_EQ(t.lift, "A");
+  EXPECT_NE(t.instruction.find("take lift A from floor " + t.start_floor + " to floor " + t.room_floor),
+            std::string::npos) << t.instruction;
+  EXPECT_TRUE(t.rode);
+  EXPECT_LT(t.lift_stop_distance_m, 0.3);
+  EXPECT_TRUE(t.found_floor);
+  EXPECT_TRUE(t.success) << t.outcome << ", " << t.distance_m << " m from the goal";
+  EXPECT_EQ(Summarize(r).rides, 1);
 }
 
 TEST(GotoEval, RefusesAWorldWithoutCorridors) {

@@ -111,6 +111,24 @@ TEST(LocalizeEval, ContourDriveSearchesAFloorFromPosesInEveryCorridor) {
   }
 }
 
+TEST(LocalizeEval, InABuildingThePlatesPickTheFloorAndAFixCountsOnlyOnTheRightFloor) {
+  const test::TwoFloorBuilding b = test::MakeTwoFloorBuilding();
+  LocalizeBuilding building{"two_floor_test", b.worlds, b.maps, b.grids};
+  LocalizeEvalOptions options = Fast(LocalizeMethod::kTextAmcl, 2);
+  options.seed = 5;
+  const LocalizeEvalResult r = RunLocalizeEval(building, options);
+  ASSERT_EQ(r.floors, (std::vector<std::string>{"2", "3"}));
+  ASSERT_EQ(r.trials.size(), 2u);
+  for (const LocalizeTrial& t : r.trials) {
+    EXPECT_TRUE(t.Success()) << "trial " << t.index << " on floor " << t.start_floor << ": fix on floor " << t.fix.floor
+                             << ", error " << t.fix.error_m << " m";
+    EXPECT_EQ(t.fix.true_floor, t.start_floor);
+    EXPECT_GE(t.floor_travel_m, 0.0);
+    EXPECT_LE(t.floor_travel_m, t.fix.travel_m + 1e-9);
+  }
+  EXPECT_EQ(Summarize(r).wrong_floor, 0);
+}
+
 TEST(LocalizeDrive, ParsesItsNamesAndRefusesOthers) {
   EXPECT_EQ(ParseLocalizeDrive("patrol"), LocalizeDrive::kPatrol);
   EXPECT_EQ(ParseLocalizeDrive("contour"), LocalizeDrive::kContour);

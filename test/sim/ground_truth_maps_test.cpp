@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "doorplate_localization/maps/building_map.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/sim/laser_simulator.h"
 #include "doorplate_localization/sim/world_loader.h"
@@ -22,6 +23,13 @@ std::int8_t CellAt(const OccupancyGrid& grid, Vec2 p) {
   int x = 0, y = 0;
   if (!grid.WorldToCell(p, &x, &y)) ADD_FAILURE() << "(" << p.x << ", " << p.y << ") is outside the grid";
   return grid.At(x, y);
+}
+
+// worlds/ holds building files (docs/building-format.md) beside the worlds.
+bool IsBuildingFile(const std::filesystem::path& path) {
+  const std::string name = path.filename().string();
+  const std::string suffix = ".building.yaml";
+  return name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 int Count(const OccupancyGrid& grid, std::int8_t value) {
@@ -184,7 +192,7 @@ TEST(GroundTruthMaps, CommittedMapsMatchTheWorldsTheyWereMadeFrom) {
   const std::filesystem::path root(DOORPLATE_SOURCE_DIR);
   int checked = 0;
   for (const auto& entry : std::filesystem::directory_iterator(root / "worlds")) {
-    if (entry.path().extension() != ".yaml") continue;
+    if (entry.path().extension() != ".yaml" || IsBuildingFile(entry.path())) continue;
     const std::string name = entry.path().stem().string();
     SCOPED_TRACE("maps/" + name + " is stale or missing: run doorplate_world_maps --world worlds/" + name +
                  ".yaml --out maps/" + name);
@@ -222,6 +230,45 @@ double GridRange(const OccupancyGrid& grid, Vec2 origin, Vec2 direction, double 
     if (grid.At(x, y) == OccupancyGrid::kOccupied) return t;
   }
   return max_range_m;
+}
+
+// maps/ holds the maps of every building of worlds/: the same floors, each naming its world's maps (checked
+// above), and the same lifts, every stop on a free cell of its floor's grid.
+TEST(GroundTruthMaps, CommittedBuildingFilesMatchTheBuildingsOfTheWorlds) {
+  const std::filesystem::path root(DOORPLATE_SOURCE_DIR);
+  int checked = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(root / "worlds")) {
+    if (!IsBuildingFile(entry.path())) continue;
+    const std::string file = entry.path().filename().string();
+    SCOPED_TRACE("maps/" + file + " is stale or missing: run doorplate_world_maps --building worlds/" + file +
+                 " --out maps");
+    const BuildingFile worlds = LoadBuildingFile(entry.path().string());
+    const std::string maps_path = (root / "maps" / file).string();
+    const BuildingFile maps = LoadBuildingFile(maps_path);
+    EXPECT_NO_THROW(LoadBuildingMaps(maps, maps_path));
+    EXPECT_EQ(maps.name, worlds.name);
+    ASSERT_EQ(maps.floors.size(), worlds.floors.size());
+    for (size_t i = 0; i < worlds.floors.size(); ++i) {
+      const std::string world_name = LoadWorldFile(worlds.floors[i].world).name;
+      EXPECT_EQ(maps.floors[i].id, worlds.floors[i].id);
+      EXPECT_EQ(maps.floors[i].occupancy_map, (root / "maps" / (world_name + ".yaml")).string());
+      EXPECT_EQ(maps.floors[i].text_map, (root / "maps" / (world_name + ".text_map.yaml")).string());
+    }
+    ASSERT_EQ(maps.lifts.size(), worlds.lifts.size());
+    for (size_t l = 0; l < worlds.lifts.size(); ++l) {
+      EXPECT_EQ(maps.lifts[l].id, worlds.lifts[l].id);
+      ASSERT_EQ(maps.lifts[l].stops.size(), worlds.lifts[l].stops.size());
+      for (size_t s = 0; s < worlds.lifts[l].stops.size(); ++s) {
+        const LiftStop &a = maps.lifts[l].stops[s], &b = worlds.lifts[l].stops[s];
+        EXPECT_EQ(a.floor, b.floor);
+        EXPECT_NEAR(a.pose.x_m, b.pose.x_m, 1e-9);
+        EXPECT_NEAR(a.pose.y_m, b.pose.y_m, 1e-9);
+        EXPECT_NEAR(a.pose.theta_rad, b.pose.theta_rad, 1e-9);
+      }
+    }
+    ++checked;
+  }
+  EXPECT_GE(checked, 1);
 }
 
 // The saved ground-truth map of the ward and the simulated laser see the same walls: ray casting in the

@@ -79,5 +79,30 @@ TEST(Simulator, TeleportMovesTheRobotButNotTheOdometry) {
   EXPECT_DOUBLE_EQ(sim.odom_pose().x_m, odom_before.x_m);
 }
 
+TEST(Simulator, ALiftRideChangesTheWorldTheLaserSeesButNotTheOdometry) {
+  Simulator sim(test::RectangleCorridor(), SimulatorOptions{});
+  sim.SetCommand(0.5, 0.0);
+  RunFor(sim, 1.0);
+  const Pose2D odom_before = sim.odom_pose();
+  const double travelled = sim.distance_travelled_m();
+  World upstairs = test::RectangleCorridor();
+  for (Wall& wall : upstairs.walls) {  // the same corridor 1 m wider to the north
+    if (wall.segment.a.y > 0.5) wall.segment.a.y += 1.0;
+    if (wall.segment.b.y > 0.5) wall.segment.b.y += 1.0;
+  }
+  upstairs.surfaces.clear();
+  const SimulatedScan before = sim.Scan();
+  sim.ChangeWorld(upstairs, sim.true_pose());
+  const SimulatedScan after = sim.Scan();
+  EXPECT_DOUBLE_EQ(sim.odom_pose().x_m, odom_before.x_m);
+  EXPECT_DOUBLE_EQ(sim.distance_travelled_m(), travelled);
+  EXPECT_DOUBLE_EQ(sim.linear_velocity_mps(), 0.0);
+  EXPECT_EQ(sim.world().walls.size(), upstairs.walls.size());
+  // The beam pointing left (+90 deg) now reaches the moved wall 1 m farther.
+  const auto left = static_cast<size_t>(std::lround((M_PI / 2 - before.angle_min_rad) / before.angle_increment_rad));
+  ASSERT_LT(left, before.ranges_m.size());
+  EXPECT_NEAR(after.ranges_m[left] - before.ranges_m[left], 1.0, 0.1);
+}
+
 }  // namespace
 }  // namespace doorplate_localization

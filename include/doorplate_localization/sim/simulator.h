@@ -34,6 +34,11 @@ class Simulator {
   void Step();
   // Moves the robot instantly (kidnapping); odometry does not see it.
   void Teleport(const Pose2D& pose);
+  // A lift ride to another floor: the robot is at `pose` in `floor_world` (a world of the same building:
+  // its surfaces and signs replace the current ones; the laser and odometry keep their settings, the camera
+  // takes the new world's), stopped; odometry, time, the random streams and the distance travelled carry
+  // on (odometry does not see the ride).
+  void ChangeWorld(World floor_world, const Pose2D& pose);
 
   double time_s() const { return time_s_; }
   const Pose2D& true_pose() const { return true_pose_; }
