@@ -1,6 +1,9 @@
 # Reliability (issue 8): crash-safety tests of the savers and the soak tool (docs/reliability.md).
 if(CATKIN_ENABLE_TESTING)
   doorplate_add_core_test(map_io_crash_safety_test test/maps/map_io_crash_safety_test.cpp doorplate_maps)
+  # The offline tools' output guard (issue 18: never overwrite an input, write nothing for an unusable run).
+  doorplate_add_core_test(output_guard_test test/tools/output_guard_test.cpp doorplate_maps)
+  target_include_directories(output_guard_test PRIVATE src/tools)
 endif()
 
 # doorplate_soak (src/tools/soak.cpp): the one-hour soak of docs/results/soak.md and, with --faults, the

@@ -18,6 +18,7 @@
 
 #include "cli_args.h"
 #include "map_tool_output.h"
+#include "output_guard.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/slam/carmen_reader.h"
 #include "doorplate_localization/slam/rbpf_slam.h"
@@ -102,6 +103,11 @@ void WritePicture(const dl::OccupancyGrid& grid, const std::vector<dl::Trajector
 
 int Run(const Args& args) {
   const tools::Stopwatch clock;
+  const std::string map_base = args.out + "/map";
+  tools::RefuseOverwritingInputs({{"--log", args.log}},
+                                 {{"--out", args.out + "/trajectory.txt"}, {"--out", args.out + "/trajectory_best.txt"},
+                                  {"--out", map_base + ".pgm"}, {"--out", map_base + ".yaml"},
+                                  {"--out", args.out + "/map_trajectory.png"}});
   std::filesystem::create_directories(args.out);  // fails early, before a long run, if it cannot
   const dl::CarmenLog log = dl::ReadCarmenLogFile(args.log);
   if (log.scans.empty()) {
@@ -124,6 +130,10 @@ int Run(const Args& args) {
   }
   const dl::SlamParticle& best = slam.BestParticle();
   const std::vector<dl::TrajectoryPoint> trajectory = slam.MeanTrajectory();
+  const dl::OccupancyGrid grid = best.map.ToOccupancyGrid();
+  // Nothing is written unless the run made a map and a finite trajectory (an older result stays).
+  tools::RequireFiniteTrajectory(trajectory, args.log);
+  tools::RequireUsableMap(grid, args.log);
   tools::WriteTrajectory(trajectory, args.out + "/trajectory.txt");
   tools::WriteTrajectory(slam.BestTrajectory(), args.out + "/trajectory_best.txt");
   if (args.dump_particles) {
@@ -132,8 +142,7 @@ int Run(const Args& args) {
                              args.out + "/trajectory_particle" + std::to_string(i) + ".txt");
     }
   }
-  const dl::OccupancyGrid grid = best.map.ToOccupancyGrid();
-  dl::SaveOccupancyMap(grid, args.out + "/map");
+  dl::SaveOccupancyMap(grid, map_base);
   WritePicture(grid, trajectory, args.out + "/map_trajectory.png");
   const dl::RbpfSlamStats& s = slam.stats();
   std::fprintf(stderr,

@@ -23,6 +23,7 @@
 
 #include "cli_args.h"
 #include "map_tool_output.h"
+#include "output_guard.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/slam/rbpf_slam_options.h"
 #include "doorplate_localization/slam/text_slam.h"
@@ -118,6 +119,9 @@ double LogNorm(const dl::Pose2D& expected, const dl::Pose2D& actual) {
 
 int Run(const Args& args) {
   const tools::Stopwatch clock;
+  tools::RefuseOverwritingInputs({{"RAWLOG", args.rawlog}},
+                                 {{"--out-dir", args.out_dir + "/map.pgm"}, {"--out-dir", args.out_dir + "/map.yaml"},
+                                  {"--out-dir", args.out_dir + "/trajectory.txt"}});
   std::filesystem::create_directories(args.out_dir);
   mrpt::obs::CRawlog rawlog;
   if (!rawlog.loadFromRawLogFile(args.rawlog) || rawlog.size() == 0) {
@@ -147,8 +151,13 @@ int Run(const Args& args) {
     }
   }
   if (slam.slam().stats().scans_processed == 0) throw std::runtime_error(args.rawlog + ": no 2D range scan");
-  dl::SaveOccupancyMap(slam.BuildOccupancyGrid(), args.out_dir + "/map");
-  tools::WriteTrajectory(slam.slam().MeanTrajectory(), args.out_dir + "/trajectory.txt");
+  // Nothing is written unless the run made a map and a finite trajectory (an older result stays).
+  const dl::OccupancyGrid grid = slam.BuildOccupancyGrid();
+  const std::vector<dl::TrajectoryPoint> trajectory = slam.slam().MeanTrajectory();
+  tools::RequireFiniteTrajectory(trajectory, args.rawlog);
+  tools::RequireUsableMap(grid, args.rawlog);
+  dl::SaveOccupancyMap(grid, args.out_dir + "/map");
+  tools::WriteTrajectory(trajectory, args.out_dir + "/trajectory.txt");
   // At the end of the log: the best particle's pose moved on by the odometry since its last processed scan
   // (MRPT's estimated path has one pose per action-observation pair, the last at the end of the log).
   const dl::Pose2D best = slam.BestPose().Compose(slam.slam().LastProcessedOdometry().Between(odometry));

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "cli_args.h"
+#include "output_guard.h"
 #include "map_tool_output.h"
 #include "doorplate_localization/sim/ground_truth_maps.h"
 #include "doorplate_localization/sim/photo_world.h"
@@ -55,6 +56,8 @@ Args ParseArgs(int argc, char** argv) {
 }
 
 int Run(const Args& args) {
+  tools::RefuseOverwritingInputs({{"--crops", args.crops}},
+                                 {{"--out", (std::filesystem::path(args.out) / "worlds" / (args.world.name + ".yaml")).string()}});
   std::ifstream in(args.crops);
   if (!in) throw std::runtime_error(args.crops + ": cannot open crops TSV");
   std::stringstream text;

@@ -16,6 +16,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "cli_args.h"
+#include "output_guard.h"
 #include "doorplate_localization/text/text_extractor.h"
 #include "json_writer.h"
 
@@ -181,6 +182,11 @@ void WriteJson(const Args& args, const std::vector<ImageResult>& results, std::o
 
 int Run(const Args& args) {
   cv::setNumThreads(1);  // one core, as on the robot (OMP_THREAD_LIMIT=1 does the same for Tesseract)
+  if (!args.json.empty() && args.json != "-") {
+    std::vector<tools::NamedPath> inputs;
+    for (const std::string& file : args.images) inputs.push_back({"IMAGE", file});
+    tools::RefuseOverwritingInputs(inputs, {{"--json", args.json}});
+  }
   dl::TextExtractor extractor(args.options);
   std::vector<ImageResult> results;
   int status = 0;

@@ -19,6 +19,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "cli_args.h"
+#include "output_guard.h"
 #include "doorplate_localization/sim/camera_renderer.h"
 #include "doorplate_localization/sim/laser_simulator.h"
 #include "doorplate_localization/sim/top_down_view.h"
@@ -121,6 +122,8 @@ void Benchmark(const dl::CameraRenderer& camera, const dl::Pose2D& pose, const A
 }
 
 int Run(const Args& args) {
+  tools::RefuseOverwritingInputs({{"--world", args.world}},
+                                 {{"--camera", args.camera_out}, {"--topdown", args.topdown_out}});
   const dl::World world = dl::LoadWorldFile(args.world);
   const dl::Pose2D pose = args.x ? dl::Pose2D{*args.x, *args.y, *args.theta} : world.start_pose;
   const dl::CameraRenderer camera(world, world.sensors.camera);

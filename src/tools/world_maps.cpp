@@ -14,6 +14,7 @@
 
 #include "cli_args.h"
 #include "map_tool_output.h"
+#include "output_guard.h"
 #include "doorplate_localization/maps/building_map.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/sim/ground_truth_maps.h"
@@ -134,9 +135,15 @@ int RunBuilding(const Args& args) {
     truth.floors.push_back(std::move(floor_maps));
   }
   dl::ValidateBuildingMaps(truth, args.building);
+  const std::string path = (fs::path(args.out) / (building.name + ".building.yaml")).string();
+  std::vector<tools::NamedPath> inputs{{"--building", args.building}}, outputs{{"--out", path}};
+  for (const dl::BuildingFloor& floor : building.floors) inputs.push_back({"--building (floor " + floor.id + ")", floor.world});
+  for (const auto& item : to_save) {
+    for (const char* ext : {".pgm", ".yaml", ".text_map.yaml"}) outputs.push_back({"--out", item.second + ext});
+  }
+  tools::RefuseOverwritingInputs(inputs, outputs);
   fs::create_directories(args.out);
   for (const auto& [maps, base] : to_save) SaveWorldMaps(maps, base);
-  const std::string path = (fs::path(args.out) / (building.name + ".building.yaml")).string();
   dl::SaveBuildingFile(out, path);
   std::cout << path << ": " << out.floors.size() << " floors, " << out.lifts.size() << " lifts\n";
   return 0;
@@ -144,6 +151,8 @@ int RunBuilding(const Args& args) {
 
 int Run(const Args& args) {
   if (!args.building.empty()) return RunBuilding(args);
+  tools::RefuseOverwritingInputs({{"--world", args.world}}, {{"--out", args.out + ".pgm"}, {"--out", args.out + ".yaml"},
+                                                             {"--out", args.out + ".text_map.yaml"}});
   SaveWorldMaps(MakeWorldMaps(dl::LoadWorldFile(args.world), args), args.out);
   return 0;
 }
