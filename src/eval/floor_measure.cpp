@@ -21,11 +21,14 @@ class GridRays {
       : grid_(grid), grid_from_world_(world_from_grid.Inverse()), unknown_blocks_(unknown_blocks) {}
 
   // Distance from world point `origin` along world direction `angle_rad` to the near face of the first
-  // blocking cell; nullopt if the ray runs out of the grid or past `max_range_m`, or starts in a blocking cell.
-  std::optional<double> Cast(Vec2 origin, double angle_rad, double max_range_m) const {
+  // blocking cell; nullopt if the ray runs out of the grid or past `max_range_m`, or starts in a blocking
+  // cell, or (`through_known_only`) crosses an unknown cell before it: an unmapped gap (a wall the robot
+  // never saw, of a room behind an open door) is not the end of a corridor, nor a way through its wall.
+  std::optional<double> Cast(Vec2 origin, double angle_rad, double max_range_m, bool through_known_only = false) const {
     const Vec2 o = grid_from_world_.TransformPoint(origin);
     const double angle = angle_rad + grid_from_world_.theta_rad;
     const double r = CastRay(grid_, o, angle, max_range_m, unknown_blocks_);
+    if (through_known_only && !unknown_blocks_ && CastRay(grid_, o, angle, max_range_m, true) < r) return std::nullopt;
     if (!(r > 0.0) || r >= max_range_m) return std::nullopt;
     // CastRay also stops at the grid's edge: accept only a ray whose next cell is in the grid and blocks.
     const double step = r + 1e-3 * grid_.resolution_m();
@@ -51,8 +54,8 @@ CorridorMeasure MeasureOne(const GridRays& rays, const CorridorSpec& corridor, c
   const double length = Norm(d);
   const double heading = std::atan2(d.y, d.x);
   const Vec2 mid = a + 0.5 * d;
-  const auto ahead = rays.Cast(mid, heading, rays.Diagonal());
-  const auto behind = rays.Cast(mid, heading + M_PI, rays.Diagonal());
+  const auto ahead = rays.Cast(mid, heading, rays.Diagonal(), /*through_known_only=*/true);
+  const auto behind = rays.Cast(mid, heading + M_PI, rays.Diagonal(), /*through_known_only=*/true);
   if (ahead && behind) m.length_m = *ahead + *behind;
 
   const double max_section_m = options.max_section_factor * corridor.width_m;

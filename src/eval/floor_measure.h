@@ -24,7 +24,9 @@ struct CorridorMeasureOptions {
 // distances to the near face of the first blocking cell). A ray counts only if it ends on an occupied
 // cell (unknown too with unknown_blocks) and its origin cell does not block; rays leaving the grid do not.
 //  length: from the centreline's midpoint along +direction and −direction, the sum of the two ray
-//    distances (through junctions and corners up to the walls that end the straight line of sight).
+//    distances (through junctions and corners up to the walls that end the straight line of sight). A
+//    length ray that crosses an unknown cell before its end is not measured (ok = false): on a SLAM map
+//    that is an unmapped gap, e.g. in the far wall of a room behind an open door, not a corridor's end.
 //  width: the median over cross-sections (centres of `section_step_m` pieces of the centreline) of the sum
 //    of the two perpendicular ray distances, skipping sections as described above.
 struct CorridorMeasure {
