@@ -17,18 +17,22 @@ namespace {
 // Rays in the grid's map frame, from world-frame origins and directions.
 class GridRays {
  public:
-  GridRays(const OccupancyGrid& grid, const Pose2D& world_from_grid, bool unknown_blocks)
-      : grid_(grid), grid_from_world_(world_from_grid.Inverse()), unknown_blocks_(unknown_blocks) {}
+  GridRays(const OccupancyGrid& grid, const Pose2D& world_from_grid, bool unknown_blocks, double unmapped_run_m)
+      : grid_(grid), grid_from_world_(world_from_grid.Inverse()), unknown_blocks_(unknown_blocks),
+        unmapped_run_m_(unmapped_run_m) {}
 
   // Distance from world point `origin` along world direction `angle_rad` to the near face of the first
   // blocking cell; nullopt if the ray runs out of the grid or past `max_range_m`, or starts in a blocking
-  // cell, or (`through_known_only`) crosses an unknown cell before it: an unmapped gap (a wall the robot
-  // never saw, of a room behind an open door) is not the end of a corridor, nor a way through its wall.
+  // cell, or (`through_known_only`) runs on for more than unmapped_run_m past the first unknown cell: a
+  // gap in a wall of the map is not a way through it (an unknown cell at a wall's face is tolerated).
   std::optional<double> Cast(Vec2 origin, double angle_rad, double max_range_m, bool through_known_only = false) const {
     const Vec2 o = grid_from_world_.TransformPoint(origin);
     const double angle = angle_rad + grid_from_world_.theta_rad;
     const double r = CastRay(grid_, o, angle, max_range_m, unknown_blocks_);
-    if (through_known_only && !unknown_blocks_ && CastRay(grid_, o, angle, max_range_m, true) < r) return std::nullopt;
+    if (through_known_only && !unknown_blocks_ &&
+        r - CastRay(grid_, o, angle, max_range_m, true) > unmapped_run_m_) {
+      return std::nullopt;
+    }
     if (!(r > 0.0) || r >= max_range_m) return std::nullopt;
     // CastRay also stops at the grid's edge: accept only a ray whose next cell is in the grid and blocks.
     const double step = r + 1e-3 * grid_.resolution_m();
@@ -45,6 +49,7 @@ class GridRays {
   LocalizationGrid grid_;
   Pose2D grid_from_world_;
   bool unknown_blocks_;
+  double unmapped_run_m_;
 };
 
 CorridorMeasure MeasureOne(const GridRays& rays, const CorridorSpec& corridor, const CorridorMeasureOptions& options) {
@@ -86,7 +91,7 @@ std::vector<CorridorMeasure> MeasureCorridors(const OccupancyGrid& grid, const s
     throw std::invalid_argument("MeasureCorridors: max_section_factor must be > 0, got " +
                                 std::to_string(options.max_section_factor));
   }
-  const GridRays rays(grid, world_from_grid, options.unknown_blocks);  // throws for an empty grid
+  const GridRays rays(grid, world_from_grid, options.unknown_blocks, options.max_unmapped_run_m);  // throws for an empty grid
   std::vector<CorridorMeasure> out;
   for (const CorridorSpec& corridor : corridors) out.push_back(MeasureOne(rays, corridor, options));
   return out;

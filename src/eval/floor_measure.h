@@ -18,6 +18,9 @@ struct CorridorMeasureOptions {
   // end on an occupied cell within it) looks into an open door, a junction or an unmapped gap: skipped.
   double max_section_factor = 2.0;
   bool unknown_blocks = false;      // true: unknown cells stop rays like occupied ones
+  // A length ray that runs on for more than this past an unknown cell passed through a gap in a wall of
+  // the map: not measured.
+  double max_unmapped_run_m = 0.2;
 };
 
 // One corridor measured on one grid. Rays are cast on the grid (src/mcl/grid_ray_caster: cell traversal,
@@ -25,8 +28,9 @@ struct CorridorMeasureOptions {
 // cell (unknown too with unknown_blocks) and its origin cell does not block; rays leaving the grid do not.
 //  length: from the centreline's midpoint along +direction and −direction, the sum of the two ray
 //    distances (through junctions and corners up to the walls that end the straight line of sight). A
-//    length ray that crosses an unknown cell before its end is not measured (ok = false): on a SLAM map
-//    that is an unmapped gap, e.g. in the far wall of a room behind an open door, not a corridor's end.
+//    length ray that runs on for more than max_unmapped_run_m past an unknown cell is not measured (ok =
+//    false): on a SLAM map that is a gap in a wall (seen: one unmapped cell of a courtyard wall), not a
+//    corridor's end; an unknown cell at a wall's face is tolerated.
 //  width: the median over cross-sections (centres of `section_step_m` pieces of the centreline) of the sum
 //    of the two perpendicular ray distances, skipping sections as described above.
 struct CorridorMeasure {

@@ -118,8 +118,8 @@ TEST(MeasureCorridors, AnOpenEndIsNotALengthUnlessUnknownCellsBlock) {
 
 TEST(MeasureCorridors, ALengthRayThroughAnUnmappedGapIsNotMeasured) {
   // A closed 10 m corridor whose east end wall has a 0.3 m unknown gap on the centreline, with a wall
-  // 20 m further east behind it: the ray would reach that wall through the gap (a room behind an open door
-  // seen only in part). The length is not measured rather than measured as 30 m.
+  // 20 m further east behind it: the ray would reach that wall through the gap. The length is not measured
+  // rather than measured as 30 m; an unknown cell just before a wall's face is tolerated.
   DrawnGrid g(-1, -1, 32, 3, Pose2D{}, OccupancyGrid::kUnknown);
   g.Line(0, 0, 10, 2, OccupancyGrid::kFree);
   g.Corridor(10.0, 2.0);
@@ -128,7 +128,8 @@ TEST(MeasureCorridors, ALengthRayThroughAnUnmappedGapIsNotMeasured) {
   const auto m = MeasureCorridors(g.grid, {Spec("c", {1, 1}, {9, 1}, 2.0)}, Pose2D{});
   EXPECT_FALSE(m[0].ok);
   EXPECT_DOUBLE_EQ(m[0].length_m, 0.0);
-  g.Line(10, 0.85, 10, 1.15);  // the wall mapped: measured again
+  g.Line(10, 0.85, 10, 1.15);  // the wall mapped, an unobserved cell at its face: measured again
+  g.Line(9.95, 1.0, 9.95, 1.0, OccupancyGrid::kUnknown);
   const auto closed = MeasureCorridors(g.grid, {Spec("c", {1, 1}, {9, 1}, 2.0)}, Pose2D{});
   EXPECT_TRUE(closed[0].ok);
   EXPECT_NEAR(closed[0].length_m, 10.0 - kRes, 1e-9);
