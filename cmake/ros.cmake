@@ -1,13 +1,16 @@
 # ROS layer: thin nodelets over the core libraries, and message conversions.
 
 # The message conversions every nodelet and tool shares (scan and detection checks, planar poses, map -> odom,
-# grids, landmark markers, camera axes): a plain shared library, not a plugin. Nodelet libraries link it and
-# never each other (class_loader would attribute a linked library's plugins to the linking one).
+# grids, landmark markers, camera axes, planar poses from tf, the ride_lift message): a plain shared library,
+# not a plugin. Nodelet libraries link it and never each other (class_loader would attribute a linked
+# library's plugins to the linking one).
 add_library(doorplate_ros_conversions
   src/ros/scan_conversions.cpp
   src/ros/pose_conversions.cpp
   src/ros/map_conversions.cpp
-  src/ros/text_detection_conversions.cpp)
+  src/ros/text_detection_conversions.cpp
+  src/ros/tf_lookup.cpp
+  src/ros/lift_ride.cpp)
 target_include_directories(doorplate_ros_conversions PUBLIC include PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(doorplate_ros_conversions doorplate_maps ${catkin_LIBRARIES})
 add_dependencies(doorplate_ros_conversions ${PROJECT_NAME}_generate_messages_cpp)
@@ -40,7 +43,7 @@ if(CATKIN_ENABLE_TESTING)
   target_link_libraries(sim_conversions_test doorplate_nodelets GTest::gtest_main ${catkin_LIBRARIES})
 
   # One test per source of doorplate_ros_conversions.
-  foreach(source scan_conversions pose_conversions map_conversions text_detection_conversions)
+  foreach(source scan_conversions pose_conversions map_conversions text_detection_conversions tf_lookup lift_ride)
     catkin_add_gtest(${source}_test test/ros/${source}_test.cpp)
     target_include_directories(${source}_test PRIVATE ${catkin_INCLUDE_DIRS})
     target_link_libraries(${source}_test doorplate_ros_conversions GTest::gtest_main ${catkin_LIBRARIES})

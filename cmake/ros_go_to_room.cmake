@@ -6,6 +6,8 @@
 add_library(doorplate_go_to_room_nodelet
   src/ros/go_to_room_conversions.cpp
   src/ros/go_to_room_options.cpp
+  src/ros/building_goal.cpp
+  src/ros/background_calls.cpp
   src/ros/go_to_room_nodelet.cpp)
 target_include_directories(doorplate_go_to_room_nodelet PUBLIC include PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(doorplate_go_to_room_nodelet doorplate_ros_conversions doorplate_behaviour doorplate_maps
@@ -18,6 +20,15 @@ if(CATKIN_ENABLE_TESTING)
   target_include_directories(go_to_room_conversions_test PRIVATE src/ros ${catkin_INCLUDE_DIRS})
   target_link_libraries(go_to_room_conversions_test doorplate_go_to_room_nodelet GTest::gtest_main
                         ${catkin_LIBRARIES})
+
+  # The building goal's phases (lift, ride, search) on the built-in two-floor hospital's maps. No ROS master.
+  catkin_add_gtest(building_goal_test test/ros/building_goal_test.cpp)
+  target_include_directories(building_goal_test PRIVATE src/ros ${catkin_INCLUDE_DIRS})
+  target_link_libraries(building_goal_test doorplate_go_to_room_nodelet GTest::gtest_main ${catkin_LIBRARIES})
+
+  catkin_add_gtest(background_calls_test test/ros/background_calls_test.cpp)
+  target_include_directories(background_calls_test PRIVATE src/ros ${catkin_INCLUDE_DIRS})
+  target_link_libraries(background_calls_test doorplate_go_to_room_nodelet GTest::gtest_main ${catkin_LIBRARIES})
 
   # Simulator (ground-truth map -> odom as the localizer) + go-to-room in one manager: rooms ahead and
   # behind are reached, an unknown room is refused, no pose means no driving. The checker also tests

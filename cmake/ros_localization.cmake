@@ -4,6 +4,7 @@
 add_library(doorplate_localization_nodelet
   src/ros/amcl_conversions.cpp
   src/ros/text_amcl_options.cpp
+  src/ros/text_amcl_building.cpp
   src/ros/text_amcl_nodelet.cpp)
 target_include_directories(doorplate_localization_nodelet PUBLIC include PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(doorplate_localization_nodelet doorplate_ros_conversions doorplate_mcl doorplate_maps
@@ -15,6 +16,12 @@ if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(amcl_conversions_test test/ros/amcl_conversions_test.cpp)
   target_include_directories(amcl_conversions_test PRIVATE ${catkin_INCLUDE_DIRS})
   target_link_libraries(amcl_conversions_test doorplate_localization_nodelet GTest::gtest_main ${catkin_LIBRARIES})
+
+  # The floors the localizer runs on: ~building_file, ~map_file and ~text_map_file loaded, the session started
+  # (laser only on one floor whose text map the session refuses). No ROS master.
+  catkin_add_gtest(text_amcl_building_test test/ros/text_amcl_building_test.cpp)
+  target_include_directories(text_amcl_building_test PRIVATE src/ros ${catkin_INCLUDE_DIRS})
+  target_link_libraries(text_amcl_building_test doorplate_localization_nodelet GTest::gtest_main ${catkin_LIBRARIES})
 
   # Sim + wall follower + text extractor + Text AMCL in one manager: global localization in a symmetric
   # corridor converges to the true pose. The checker also tests LoadTextAmclOptions (needs a parameter server).

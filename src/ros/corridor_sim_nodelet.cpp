@@ -4,6 +4,11 @@
 // map -> odom from the true pose if ~publish_ground_truth_tf), static tf base_link -> laser and
 // base_link -> camera_link -> camera_optical; subscribes cmd_vel and ~teleport (geometry_msgs/Pose2D: moves
 // the robot there at once, in the world frame, metres and radians — a kidnapping; odometry does not see it).
+// It also subscribes ride_lift (std_msgs/String "<lift id> <floor id>", e.g. "A 3", ros/lift_ride.h): with
+// ~building (several floors' worlds and their lifts, docs/building-format.md) a robot within 1.5 m of that
+// lift's stop on its floor leaves the lift at its stop on that floor, facing away from the door
+// (Simulator::ChangeWorld; odometry does not see the ride); else a warning says why and nothing moves.
+// Publishes ~floor (std_msgs/String, latched: the floor the robot is truly on; with ~world, the world's name).
 // Parameters: corridor_sim_options.h.
 #include <atomic>
 #include <cmath>
@@ -19,10 +24,12 @@
 #include <pluginlib/class_list_macros.hpp>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
+#include <std_msgs/String.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
 
 #include "corridor_sim_options.h"
+#include "doorplate_localization/ros/lift_ride.h"
 #include "doorplate_localization/ros/sim_conversions.h"
 #include "doorplate_localization/sim/simulator.h"
 
@@ -71,6 +78,7 @@ class CorridorSimNodelet : public nodelet::Nodelet {
     try {
       options_ = LoadCorridorSimOptions(getPrivateNodeHandle());
       sim_ = std::make_unique<Simulator>(options_.world, options_.simulator);
+      floor_ = options_.start_floor;
     } catch (const std::exception& e) {
       NODELET_FATAL("%s", e.what());
       throw;
@@ -84,11 +92,15 @@ class CorridorSimNodelet : public nodelet::Nodelet {
     info_pub_ = nh.advertise<sensor_msgs::CameraInfo>("camera/camera_info", 2);
     cmd_sub_ = nh.subscribe("cmd_vel", 10, &CorridorSimNodelet::OnCmdVel, this);
     teleport_sub_ = getPrivateNodeHandle().subscribe("teleport", 1, &CorridorSimNodelet::OnTeleport, this);
+    ride_sub_ = nh.subscribe("ride_lift", 5, &CorridorSimNodelet::OnRideLift, this);
+    floor_pub_ = getPrivateNodeHandle().advertise<std_msgs::String>("floor", 1, /*latch=*/true);
+    PublishFloor();
     tf_ = std::make_unique<tf2_ros::TransformBroadcaster>();
     static_tf_ = std::make_unique<tf2_ros::StaticTransformBroadcaster>();
     PublishStaticTransforms();
-    NODELET_INFO("corridor sim: world '%s' (%s), seed %lu, real_time_factor %.2f, physics step %.3f s",
-                 options_.world.name.c_str(), options_.world_file.c_str(),
+    NODELET_INFO("corridor sim: world '%s' (%s; floor '%s' of %zu), seed %lu, real_time_factor %.2f, "
+                 "physics step %.3f s", options_.world.name.c_str(), options_.world_file.c_str(),
+                 options_.floor.c_str(), options_.building.floors.size(),
                  static_cast<unsigned long>(options_.simulator.seed), options_.real_time_factor,
                  options_.simulator.physics_step_s);
     worker_ = std::thread(&CorridorSimNodelet::Run, this);
@@ -115,6 +127,35 @@ class CorridorSimNodelet : public nodelet::Nodelet {
     sim_->Teleport({msg->x, msg->y, msg->theta});
     NODELET_WARN("%s: robot teleported to (%.2f, %.2f, %.1f deg)", teleport_sub_.getTopic().c_str(), msg->x, msg->y,
                  msg->theta * 180.0 / M_PI);
+  }
+
+  // A lift ride: validate -> plan where it ends (lift_ride.h) -> move the robot to that floor's world.
+  void OnRideLift(const std_msgs::String::ConstPtr& msg) {
+    const std::string& topic = ride_sub_.getTopic();
+    LiftRideRequest ride;
+    std::string problem = ParseLiftRide(msg->data, &ride);
+    std::lock_guard<std::mutex> lock(mutex_);
+    const std::string& from = options_.building.floors[static_cast<size_t>(floor_)].id;
+    int to = -1;
+    Pose2D pose;
+    if (problem.empty()) {
+      problem = PlanLiftRide(options_.building, ride, from, sim_->true_pose(), kLiftRideDistanceM, &to, &pose);
+    }
+    if (!problem.empty()) {
+      NODELET_WARN("%s: '%s': %s; the robot stays where it is", topic.c_str(), msg->data.c_str(), problem.c_str());
+      return;
+    }
+    sim_->ChangeWorld(options_.floor_worlds[static_cast<size_t>(to)], pose);
+    floor_ = to;
+    NODELET_INFO("%s: rode lift %s from floor %s to floor %s: at (%.2f, %.2f, %.0f deg)", topic.c_str(),
+                 ride.lift.c_str(), from.c_str(), ride.floor.c_str(), pose.x_m, pose.y_m, pose.theta_rad * 180 / M_PI);
+    PublishFloor();
+  }
+
+  void PublishFloor() {  // requires mutex_ once the worker runs
+    std_msgs::String msg;
+    msg.data = options_.building.floors[static_cast<size_t>(floor_)].id;
+    floor_pub_.publish(msg);
   }
 
   void PublishStaticTransforms() {
@@ -208,15 +249,17 @@ class CorridorSimNodelet : public nodelet::Nodelet {
   }
 
   static constexpr double kMaxLagS = 0.5;
+  static constexpr double kLiftRideDistanceM = 1.5;  // a ride needs the robot this close to the lift's stop
 
   CorridorSimOptions options_;
-  std::mutex mutex_;  // guards sim_, last_cmd_time_s_ and turned_rad_
+  std::mutex mutex_;  // guards sim_, floor_, last_cmd_time_s_ and turned_rad_
   std::unique_ptr<Simulator> sim_;
   double last_cmd_time_s_ = -std::numeric_limits<double>::infinity();
   double turned_rad_ = 0.0;  // sum of |yaw change| of the true pose, for the odometry variance
+  int floor_ = 0;            // index into options_.building.floors: where the robot truly is
   std::optional<RateGate> scan_gate_, odom_gate_, camera_gate_;
-  ros::Publisher clock_pub_, scan_pub_, odom_pub_, truth_pub_, image_pub_, info_pub_;
-  ros::Subscriber cmd_sub_, teleport_sub_;
+  ros::Publisher clock_pub_, scan_pub_, odom_pub_, truth_pub_, image_pub_, info_pub_, floor_pub_;
+  ros::Subscriber cmd_sub_, teleport_sub_, ride_sub_;
   std::unique_ptr<tf2_ros::TransformBroadcaster> tf_;
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_tf_;
   std::atomic<bool> stop_{false};

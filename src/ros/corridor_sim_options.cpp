@@ -4,6 +4,7 @@
 #include "corridor_sim_options.h"
 
 #include <cmath>
+#include <optional>
 #include <set>
 #include <string>
 #include <tuple>
@@ -22,7 +23,13 @@ const ParamTable<CorridorSimOptions>& CorridorSimParamTable() {
   static const ParamTable<O> table = {
       Param<O>("world", DOORPLATE_PARAM_FIELD(world_file),
                "world file, docs/world-format.md; its `sensors:` block sets the sensor models and rates")
-          .DefaultText("(required)"),
+          .DefaultText("(required, or `building`)"),
+      Param<O>("building", DOORPLATE_PARAM_FIELD(building_file),
+               "instead of `world`: a building file naming each floor's `world` and the lifts "
+               "(docs/building-format.md); the start floor's world gives the sensors of every floor; `ride_lift` "
+               "carries the robot between floors"),
+      Param<O>("floor", DOORPLATE_PARAM_FIELD(floor),
+               "with `building`: the id of the floor the robot starts on; \"\": the building's first"),
       Param<O>("start_x_m", DOORPLATE_PARAM_FIELD(world.start_pose.x_m),
                "where the robot starts, world frame (e.g. a localization run from an unknown pose)", r::Finite())
           .DefaultText("the world's `robot.start`"),
@@ -92,19 +99,79 @@ const ParamTable<CorridorSimOptions>& CorridorSimParamTable() {
   return table;
 }
 
+namespace {
+
+std::string FloorIds(const BuildingFile& building) {
+  std::string ids;
+  for (const BuildingFloor& floor : building.floors) ids += (ids.empty() ? "" : ", ") + floor.id;
+  return ids;
+}
+
+// ~building: every floor's world, the start floor's as the world.
+void LoadBuildingWorlds(const ParamSource& source, CorridorSimOptions* o) {
+  const std::string param = source.Resolve("building") + " = '" + o->building_file + "'";
+  try {
+    o->building = LoadBuildingFile(o->building_file);
+  } catch (const std::exception& e) {  // BuildingFileError names the file and field
+    throw ParameterError(param + " cannot be used: " + e.what());
+  }
+  for (size_t f = 0; f < o->building.floors.size(); ++f) {
+    const BuildingFloor& floor = o->building.floors[f];
+    const std::string where = param + ": floors[" + std::to_string(f) + "] (id '" + floor.id + "')";
+    if (floor.world.empty()) throw ParameterError(where + ": names no world (the simulator needs every floor's)");
+    try {
+      o->floor_worlds.push_back(LoadWorldFile(floor.world));
+    } catch (const std::exception& e) {  // WorldFileError names the file and field
+      throw ParameterError(where + ": " + e.what());
+    }
+  }
+  const std::optional<ParamValue> floor = source.Get("floor", std::string());
+  o->floor = floor ? std::get<std::string>(*floor) : "";
+  o->start_floor = o->floor.empty() ? 0 : o->building.FloorIndex(o->floor);
+  if (o->start_floor < 0) {
+    throw ParameterError(source.Resolve("floor") + ": no floor '" + o->floor + "' in " + o->building_file +
+                         " (floors: " + FloorIds(o->building) + ")");
+  }
+  o->world_file = o->building.floors[static_cast<size_t>(o->start_floor)].world;
+  o->world = o->floor_worlds[static_cast<size_t>(o->start_floor)];
+}
+
+}  // namespace
+
 CorridorSimOptions CorridorSimOptionsFrom(const ParamSource& source) {
   CorridorSimOptions o;
   const std::optional<ParamValue> world_file = source.Get("world", std::string());
+  const std::optional<ParamValue> building_file = source.Get("building", std::string());
   o.world_file = world_file ? std::get<std::string>(*world_file) : "";
-  if (o.world_file.empty()) {
-    throw ParameterError(source.Resolve("world") + " is required: the path of a world file (worlds/*.yaml)");
+  o.building_file = building_file ? std::get<std::string>(*building_file) : "";
+  if (!o.world_file.empty() && !o.building_file.empty()) {
+    throw ParameterError(source.Resolve("world") + " and " + source.Resolve("building") +
+                         " are both set: give one (a world, or a building of several floors' worlds)");
   }
-  try {
-    o.world = LoadWorldFile(o.world_file);
-  } catch (const std::exception& e) {  // WorldFileError names the file and field
-    throw ParameterError(source.Resolve("world") + " = '" + o.world_file + "' cannot be used: " + e.what());
+  if (o.world_file.empty() && o.building_file.empty()) {
+    throw ParameterError(source.Resolve("world") + " is required: the path of a world file (worlds/*.yaml), or " +
+                         source.Resolve("building") + ": a building file (worlds/*.building.yaml)");
+  }
+  if (!o.building_file.empty()) {
+    LoadBuildingWorlds(source, &o);
+  } else {
+    try {
+      o.world = LoadWorldFile(o.world_file);
+    } catch (const std::exception& e) {  // WorldFileError names the file and field
+      throw ParameterError(source.Resolve("world") + " = '" + o.world_file + "' cannot be used: " + e.what());
+    }
+    if (source.Get("floor", std::string())) {
+      throw ParameterError(source.Resolve("floor") + " is a floor of " + source.Resolve("building") +
+                           ", which is not set (" + source.Resolve("world") + " is one floor)");
+    }
+    o.building.name = o.world.name;  // one floor, named after the world, no lifts
+    o.building.floors.push_back({o.world.name, "", "", o.world_file});
+    o.floor_worlds.push_back(o.world);
+    o.floor = o.world.name;
   }
   ApplyParamTable(CorridorSimParamTable(), source, &o);  // over the world's camera and start pose
+  if (o.floor.empty()) o.floor = o.building.floors.front().id;
+  for (World& floor_world : o.floor_worlds) floor_world.sensors = o.world.sensors;  // the robot's, on every floor
 
   const CameraOptions& camera = o.world.sensors.camera;
   for (const auto& [name, value, limit] : {std::tuple<const char*, double, double>{"camera/cx_px", camera.cx_px,

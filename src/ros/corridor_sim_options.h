@@ -4,9 +4,11 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <ros/node_handle.h>
 
+#include "doorplate_localization/maps/building_map.h"
 #include "doorplate_localization/ros/param_reader.h"
 #include "doorplate_localization/ros/param_table.h"
 
@@ -16,7 +18,14 @@
 namespace doorplate_localization {
 
 struct CorridorSimOptions {
-  std::string world_file;           // ~world (required): the world YAML, docs/world-format.md
+  std::string world_file;           // ~world (or ~building): the world YAML, docs/world-format.md
+  // ~building instead of ~world: a building of several floors (docs/building-format.md: each floor's world,
+  // and the lifts); ~floor the floor the robot starts on ("" = the first). world_file is that floor's world.
+  std::string building_file;
+  std::string floor;
+  BuildingFile building;            // loaded from building_file (a one-floor building of ~world without it)
+  std::vector<World> floor_worlds;  // every floor's world in building order, all with world.sensors
+  int start_floor = 0;              // index of ~floor in building.floors
   World world;                      // loaded from world_file; its sensor settings give the rates; its
                                     // start pose overridden by ~start_x_m, ~start_y_m, ~start_theta_deg,
                                     // its camera's size and intrinsics by ~camera/width_px, ~camera/height_px,
@@ -38,8 +47,10 @@ struct CorridorSimOptions {
 // Every parameter: name, field, default (or the world's), rule, doc line.
 const ParamTable<CorridorSimOptions>& CorridorSimParamTable();
 
-// Loads the world file of ~world, then reads every parameter over it and validates. Throws ParameterError
-// naming the parameter (e.g. "/corridor_sim/real_time_factor must be finite and >= 0 ..., got -1"). ROS-free.
+// Loads the world file of ~world (or every floor's world of ~building), then reads every parameter over the
+// start floor's and validates. Throws ParameterError naming the parameter (e.g. "/corridor_sim/real_time_factor
+// must be finite and >= 0 ..., got -1", "/corridor_sim/floor: no floor '4' in b.building.yaml (floors: 2, 3)").
+// ROS-free.
 CorridorSimOptions CorridorSimOptionsFrom(const ParamSource& source);
 
 // CorridorSimOptionsFrom(the parameters under `private_nh`).

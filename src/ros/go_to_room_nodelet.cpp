@@ -1,20 +1,24 @@
 // GoToRoomNodelet: go to a room by number (paper Sec. 3.4, Fig. 8, eq. 15) as a thin nodelet over
-// RoomGoalPlanner, PlanFromReading and GoToRoom (include/doorplate_localization/behaviour/).
-// Subscribes go_to_room (std_msgs/String: "105", or "220@north" for one plate of a repeated number; every
-// request replaces the current goal), scan (sensor_msgs/LaserScan, for the wall following) and, with
-// ~text_fallback, text_detections (TextDetectionArray). Pose: tf map -> base_link (a localizer's, amcl
-// style); while that tf is missing a request waits (a warning names the frames) and nothing drives, unless
-// a plate was read recently: then eq. 15 gives the goal in odom and the robot drives by odometry.
-// Publishes cmd_vel (geometry_msgs/Twist) ONLY while a goal is active (and one zero when it ends), so it
-// idles beside another driver until asked; ~status (std_msgs/String, latched: "idle", "waiting_for_pose: ...",
-// "turning: ...", "driving: room 105, 3.20 m to go", "facing: ...", "arrived: ...", "refused: <reason>",
-// "failed: <reason>"), ~goal (geometry_msgs/PoseStamped, latched, for rviz). Parameters: go_to_room_options.h.
-// With ~route grid (a whole floor) it also subscribes map (nav_msgs/OccupancyGrid, latched by the localizer)
-// and drives FloorGoToRoom instead: a path over the grid round corners ("following: ..." statuses), published
-// on ~path (nav_msgs/Path, latched, for rviz); a request waits for both the map and the map pose.
+// RoomGoalPlanner, PlanFromReading and GoToRoom (include/doorplate_localization/behaviour/). Subscribes
+// go_to_room (std_msgs/String: "105", or "220@north" for one plate of a repeated number; a request replaces
+// the current goal), scan and, with ~text_fallback, text_detections. Pose: tf map -> base_link (a localizer's);
+// while it is missing a request waits (a warning names the frames) and nothing drives, unless a plate was read
+// recently: then eq. 15 gives the goal in odom and the robot drives by odometry. Publishes cmd_vel ONLY while a
+// goal is active (and one zero when it ends), so it idles beside another driver; ~status (latched: "idle",
+// "waiting_for_pose: ...", "turning: ...", "driving: room 105, 3.20 m to go", "facing: ...", "arrived: ...",
+// "refused: <reason>", "failed: <reason>"), ~goal (latched PoseStamped). Parameters: go_to_room_options.h.
+// ~route grid (a whole floor): it subscribes map (latched by the localizer) and drives FloorGoToRoom, a path
+// round corners ("following: ..."), latched on ~path; a request waits for the map and the map pose.
+// ~building_file (several floors): the grids come from that file; a request waits until the localizer
+// (amcl/floor, amcl/state) has converged, the search drive on meanwhile (~search_enable_service), then goes to
+// the room, or to a lift's stop ("to_lift: ... take lift A from floor 2 to floor 3 ..."), waits for ride_lift
+// ("waiting_for_lift: ..."), calls the localizer's global_localization and searches until it has converged on
+// the room's floor ("localizing: ..."), then drives to the room (building_goal.h).
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/Twist.h>
@@ -25,7 +29,8 @@
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_msgs/String.h>
-#include <tf2/utils.h>
+#include <std_srvs/Empty.h>
+#include <std_srvs/SetBool.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
@@ -34,6 +39,9 @@
 #include "doorplate_localization/ros/pose_conversions.h"
 #include "doorplate_localization/ros/scan_conversions.h"
 #include "doorplate_localization/ros/text_detection_conversions.h"
+#include "doorplate_localization/ros/tf_lookup.h"
+#include "background_calls.h"
+#include "building_goal.h"
 #include "go_to_room_conversions.h"
 #include "go_to_room_options.h"
 
@@ -53,6 +61,10 @@ class GoToRoomNodelet : public nodelet::Nodelet {
       options_ = LoadGoToRoomOptions(pnh);
       planner_ = std::make_unique<RoomGoalPlanner>(options_.planner, options_.text_map, options_.text_map_file);
       controller_ = std::make_unique<GoToRoom>(options_.controller);
+      if (options_.building) {
+        building_ = std::make_unique<BuildingGoal>(BuildingRouteOptions{options_.floor.planner, options_.planner},
+                                                   options_.building);
+      }
     } catch (const std::exception& e) {
       NODELET_FATAL("%s", e.what());
       throw;
@@ -63,9 +75,17 @@ class GoToRoomNodelet : public nodelet::Nodelet {
     goal_pub_ = pnh.advertise<geometry_msgs::PoseStamped>("goal", 1, /*latch=*/true);
     request_sub_ = nh.subscribe("go_to_room", 5, &GoToRoomNodelet::OnRequest, this);
     scan_sub_ = nh.subscribe("scan", 1, &GoToRoomNodelet::OnScan, this);
+    if (building_) {  // the localizer's floor and state (latched), and the lift rides
+      for (const bool floor : {true, false}) {
+        localizer_subs_.push_back(nh.subscribe<std_msgs::String>(
+            floor ? "amcl/floor" : "amcl/state", 1,
+            [this, floor](const std_msgs::String::ConstPtr& m) { OnLocalizer(floor, m->data); }));
+      }
+      ride_sub_ = nh.subscribe("ride_lift", 5, &GoToRoomNodelet::OnRide, this);
+    }
     if (options_.route == "grid") {
       path_pub_ = pnh.advertise<nav_msgs::Path>("path", 1, /*latch=*/true);
-      map_sub_ = nh.subscribe("map", 1, &GoToRoomNodelet::OnMap, this);
+      if (!building_) map_sub_ = nh.subscribe("map", 1, &GoToRoomNodelet::OnMap, this);
     } else if (options_.text_fallback) {
       detections_sub_ = nh.subscribe("text_detections", 10, &GoToRoomNodelet::OnDetections, this);
     }
@@ -81,9 +101,9 @@ class GoToRoomNodelet : public nodelet::Nodelet {
     controller_->Cancel();
     if (floor_) floor_->Cancel();
     pending_.reset();
-    const RoomCandidates candidates = planner_->Candidates(msg->data);
-    if (candidates.landmarks.empty()) {
-      Refuse(candidates.refusal, was_active);
+    const std::string refusal = building_ ? building_->Start(msg->data) : planner_->Candidates(msg->data).refusal;
+    if (!refusal.empty()) {
+      Refuse(refusal, was_active);
       return;
     }
     if (was_active) cmd_pub_.publish(geometry_msgs::Twist());
@@ -95,10 +115,8 @@ class GoToRoomNodelet : public nodelet::Nodelet {
   void TryPlan(const ros::Time& stamp) {
     std::string problem;
     const std::optional<Pose2D> map_pose = LookupPose(options_.global_frame_id, stamp, &problem);
-    if (options_.route == "grid") {
-      TryPlanOnGrid(map_pose, problem);
-      return;
-    }
+    if (building_) return TryPlanInBuilding(map_pose);
+    if (options_.route == "grid") return TryPlanOnGrid(map_pose, problem);
     RoomGoalResult result;
     if (map_pose) {
       result = planner_->Plan(*pending_, map_pose);
@@ -107,11 +125,8 @@ class GoToRoomNodelet : public nodelet::Nodelet {
       result = PlanFromReading(*planner_, *pending_, reading_->plate);
       goal_frame_ = options_.odom_frame_id;
     } else {
-      const std::string waiting = "waiting_for_pose: room " + *pending_ + ": no tf " + options_.global_frame_id +
-                                  " -> " + options_.base_frame_id + " (" + problem + ")" +
-                                  (options_.text_fallback ? " and no plate read recently" : "") + "; not driving";
-      NODELET_WARN_THROTTLE(5.0, "%s", waiting.c_str());
-      PublishStatus(waiting);
+      WaitForPose(*pending_, NoPose(options_.global_frame_id, problem) +
+                                 (options_.text_fallback ? " and no plate read recently" : ""), false);
       return;
     }
     const std::string request = *pending_;
@@ -131,13 +146,9 @@ class GoToRoomNodelet : public nodelet::Nodelet {
   // TryPlan for ~route grid: the goal from the text map, the path from the map pose over the latest map.
   void TryPlanOnGrid(const std::optional<Pose2D>& map_pose, const std::string& problem) {
     if (!floor_ || !map_pose) {
-      const std::string waiting = "waiting_for_pose: room " + *pending_ + ": " +
-                                  (!floor_ ? "no map on " + map_sub_.getTopic() + " yet"
-                                           : "no tf " + options_.global_frame_id + " -> " + options_.base_frame_id +
-                                                 " (" + problem + ")") +
-                                  "; not driving";
-      NODELET_WARN_THROTTLE(5.0, "%s", waiting.c_str());
-      PublishStatus(waiting);
+      WaitForPose(*pending_,
+                  !floor_ ? "no map on " + map_sub_.getTopic() + " yet" : NoPose(options_.global_frame_id, problem),
+                  false);
       return;
     }
     const RoomGoalResult result = planner_->Plan(*pending_, map_pose);
@@ -146,19 +157,75 @@ class GoToRoomNodelet : public nodelet::Nodelet {
       Refuse(result.refusal, false);
       return;
     }
+    StartOnGrid(*result.goal, *map_pose);
+  }
+
+  // floor_ on `goal` from `pose` (map frame), the goal and path published; false (status published) if refused.
+  bool StartOnGrid(const RoomGoal& goal, const Pose2D& pose) {
     goal_frame_ = options_.global_frame_id;
-    if (!floor_->Start(*result.goal, *map_pose)) {
+    if (!floor_->Start(goal, pose)) {
       NODELET_ERROR("go to room %s", floor_->Status().c_str());
       PublishStatus(floor_->Status());
+      return false;
+    }
+    const Pose2D& g = goal.pose;
+    NODELET_INFO("going to room %s: goal (%.2f, %.2f, %.2f rad) in %s, path %.1f m%s%s", goal.room.c_str(), g.x_m,
+                 g.y_m, g.theta_rad, goal_frame_.c_str(), floor_->first_plan_length_m(), goal.note.empty() ? "" : "; ",
+                 goal.note.c_str());
+    goal_pub_.publish(ToGoalPoseMsg(g, goal_frame_, ros::Time::now()));
+    path_pub_.publish(ToPathMsg(floor_->path().waypoints, goal_frame_, ros::Time::now()));
+    PublishStatus(floor_->Status());
+    return true;
+  }
+
+  // TryPlan with ~building_file: search until the localizer has converged, then plan and drive the next leg.
+  void TryPlanInBuilding(const std::optional<Pose2D>& map_pose) {
+    if (!building_->TryStartLeg(map_pose)) {
+      SetSearch(building_->searching());
+      if (!building_->searching()) pending_.reset();  // refused or failed
+      PublishStatus(building_->Status());
       return;
     }
-    const Pose2D& g = result.goal->pose;
-    NODELET_INFO("going to room %s: goal (%.2f, %.2f, %.2f rad) in %s, path %.1f m%s%s", result.goal->room.c_str(),
-                 g.x_m, g.y_m, g.theta_rad, goal_frame_.c_str(), floor_->first_plan_length_m(),
-                 result.goal->note.empty() ? "" : "; ", result.goal->note.c_str());
-    goal_pub_.publish(ToGoalPoseMsg(g, goal_frame_, ros::Time::now()));
-    PublishPath();
-    PublishStatus(floor_->Status());
+    pending_.reset();
+    SetSearch(false);
+    NODELET_INFO("go to room %s", building_->Status().c_str());
+    PublishStatus(building_->Status());  // the route: "to_lift: ... take lift A ..." or "to_room: ..."
+    floor_ = std::make_unique<FloorGoToRoom>(options_.floor, options_.building->floors[building_->leg_floor()].grid);
+    if (!StartOnGrid(building_->leg(), *map_pose)) building_->OnLegEnded(false, floor_->Status());
+  }
+
+  void OnLocalizer(bool floor, const std::string& value) {  // amcl/floor or amcl/state
+    std::lock_guard<std::mutex> lock(mutex_);
+    floor ? building_->SetLocalizerFloor(value) : building_->SetLocalizerState(value);
+    if (pending_) TryPlan(ros::Time(0));
+  }
+
+  // ride_lift: the route's ride ends the wait; the localizer starts over (global_localization: the floor is
+  // unknown again) and the robot searches until it has converged on the room's floor.
+  void OnRide(const std_msgs::String::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::string problem;
+    if (!building_->OnRide(msg->data, &problem)) {
+      NODELET_INFO("%s: '%s': %s; ignored", ride_sub_.getTopic().c_str(), msg->data.c_str(), problem.c_str());
+      return;
+    }
+    calls_.Post([this, service = getNodeHandle().resolveName("global_localization")] {
+      std_srvs::Empty empty;
+      if (!ros::service::call(service, empty)) NODELET_WARN("go to room: %s did not answer", service.c_str());
+    });
+    pending_ = building_->request();
+    NODELET_INFO("go to room %s", building_->Status().c_str());
+    TryPlan(ros::Time(0));
+  }
+
+  void SetSearch(bool on) {  // the search drive (~search_enable_service), called on a change only
+    if (options_.search_enable_service.empty() || search_on_ == on) return;
+    search_on_ = on;
+    calls_.Post([this, on, service = getNodeHandle().resolveName(options_.search_enable_service)] {
+      std_srvs::SetBool srv;
+      srv.request.data = on;
+      if (!ros::service::call(service, srv)) NODELET_WARN("go to room: %s did not answer", service.c_str());
+    });
   }
 
   void OnMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
@@ -180,21 +247,6 @@ class GoToRoomNodelet : public nodelet::Nodelet {
     if (pending_) TryPlan(ros::Time(0));
   }
 
-  void PublishPath() {
-    nav_msgs::Path path;
-    path.header.frame_id = goal_frame_;
-    path.header.stamp = ros::Time::now();
-    for (const Vec2& p : floor_->path().waypoints) {
-      geometry_msgs::PoseStamped pose;
-      pose.header = path.header;
-      pose.pose.position.x = p.x;
-      pose.pose.position.y = p.y;
-      pose.pose.orientation.w = 1.0;
-      path.poses.push_back(pose);
-    }
-    path_pub_.publish(path);
-  }
-
   bool Active() const { return controller_->active() || (floor_ && floor_->active()); }
 
   void Refuse(const std::string& reason, bool was_active) {
@@ -207,38 +259,27 @@ class GoToRoomNodelet : public nodelet::Nodelet {
   void OnScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
     std::lock_guard<std::mutex> lock(mutex_);
     std::string problem = ValidateScan(*scan);
-    double yaw_in_base = 0.0;
+    std::optional<Pose2D> laser_in_base;
     if (problem.empty()) {
-      try {
-        yaw_in_base = tf2::getYaw(tf_buffer_
-                                      .lookupTransform(options_.base_frame_id, scan->header.frame_id,
-                                                       scan->header.stamp, ros::Duration(options_.tf_timeout_s))
-                                      .transform.rotation);
-      } catch (const tf2::TransformException& e) {
-        problem = "no tf " + options_.base_frame_id + " -> " + scan->header.frame_id + ": " + e.what();
-      }
+      laser_in_base = LookupPlanarPose(tf_buffer_, options_.base_frame_id, scan->header.frame_id, scan->header.stamp,
+                                       options_.tf_timeout_s, &problem);
     }
     if (!problem.empty()) {
       NODELET_ERROR_THROTTLE(2.0, "%s: %s; not driving", scan_sub_.getTopic().c_str(), problem.c_str());
       if (Active()) cmd_pub_.publish(geometry_msgs::Twist());
       return;
     }
+    const double yaw_in_base = laser_in_base->theta_rad;
     last_valid_scan_ = ros::Time::now();
     if (pending_) TryPlan(scan->header.stamp);
-    if (floor_ && floor_->active()) {
-      StepOnGrid(*scan, yaw_in_base);
-      return;
-    }
-    if (!controller_->active()) return;
+    const bool on_grid = floor_ && floor_->active();
+    if (!on_grid && !controller_->active()) return;
     const std::optional<Pose2D> pose = LookupPose(goal_frame_, scan->header.stamp, &problem);
     if (!pose) {
-      const std::string waiting = "waiting_for_pose: room " + controller_->goal().room + ": no tf " + goal_frame_ +
-                                  " -> " + options_.base_frame_id + " (" + problem + "); not driving";
-      NODELET_WARN_THROTTLE(5.0, "%s", waiting.c_str());
-      cmd_pub_.publish(geometry_msgs::Twist());
-      PublishStatus(waiting);
+      WaitForPose(on_grid ? floor_->goal().room : controller_->goal().room, NoPose(goal_frame_, problem), true);
       return;
     }
+    if (on_grid) return StepOnGrid(*scan, yaw_in_base, *pose);
     const VelocityCommand cmd =
         controller_->Step(scan->ranges, scan->angle_min + yaw_in_base, scan->angle_increment, *pose);
     cmd_pub_.publish(ToTwistMsg(cmd));  // a zero command once the goal ends
@@ -248,25 +289,22 @@ class GoToRoomNodelet : public nodelet::Nodelet {
     PublishStatus(status);
   }
 
-  void StepOnGrid(const sensor_msgs::LaserScan& scan, double yaw_in_base) {
-    std::string problem;
-    const std::optional<Pose2D> pose = LookupPose(goal_frame_, scan.header.stamp, &problem);
-    if (!pose) {
-      const std::string waiting = "waiting_for_pose: room " + floor_->goal().room + ": no tf " + goal_frame_ +
-                                  " -> " + options_.base_frame_id + " (" + problem + "); not driving";
-      NODELET_WARN_THROTTLE(5.0, "%s", waiting.c_str());
-      cmd_pub_.publish(geometry_msgs::Twist());
-      PublishStatus(waiting);
-      return;
-    }
+  void StepOnGrid(const sensor_msgs::LaserScan& scan, double yaw_in_base, const Pose2D& pose) {
     const int replans = floor_->replans();
-    const VelocityCommand cmd = floor_->Step(scan.ranges, scan.angle_min + yaw_in_base, scan.angle_increment, *pose,
-                                             scan.header.stamp.toSec());
+    const ros::Time& stamp = scan.header.stamp;
+    const VelocityCommand cmd =
+        floor_->Step(scan.ranges, scan.angle_min + yaw_in_base, scan.angle_increment, pose, stamp.toSec());
     cmd_pub_.publish(ToTwistMsg(cmd));  // a zero command once the goal ends
-    if (floor_->replans() != replans) PublishPath();
+    if (floor_->replans() != replans) path_pub_.publish(ToPathMsg(floor_->path().waypoints, goal_frame_, stamp));
     const std::string status = floor_->Status();
     if (floor_->state() == FloorGoToRoomState::kFailed) NODELET_ERROR("go to room %s", status.c_str());
     if (floor_->state() == FloorGoToRoomState::kArrived) NODELET_INFO("go to room %s", status.c_str());
+    if (building_ && !floor_->active()) {  // a building leg ended: wait for the lift, or the goal's end
+      building_->OnLegEnded(floor_->state() == FloorGoToRoomState::kArrived, status);
+      if (building_->Status() != status) NODELET_INFO("go to room %s", building_->Status().c_str());
+      PublishStatus(building_->Status());
+      return;
+    }
     PublishStatus(status);
   }
 
@@ -311,26 +349,26 @@ class GoToRoomNodelet : public nodelet::Nodelet {
     }
   }
 
-  // base_link in `frame` at `stamp` (0: the latest); nullopt with `*problem` set when tf has none.
+  // base_link in `frame` at `stamp` (0: the latest, without waiting); nullopt with `*problem` set when tf has none.
   std::optional<Pose2D> LookupPose(const std::string& frame, const ros::Time& stamp, std::string* problem) {
-    try {
-      const ros::Duration wait(stamp.isZero() ? 0.0 : options_.tf_timeout_s);
-      return ToPose2D(tf_buffer_.lookupTransform(frame, options_.base_frame_id, stamp, wait).transform);
-    } catch (const std::exception& e) {  // tf2::TransformException, or a non-finite transform
-      *problem = e.what();
-      return std::nullopt;
-    }
+    const double wait_s = stamp.isZero() ? 0.0 : options_.tf_timeout_s;
+    return LookupPlanarPose(tf_buffer_, frame, options_.base_frame_id, stamp, wait_s, problem);
   }
 
-  // Publishes on a change of state, and at most once a second while the text only changes its numbers.
-  void PublishStatus(const std::string& status) {
-    const std::string state = status.substr(0, status.find(':'));
-    const ros::Time now = ros::Time::now();
-    if (status == last_status_) return;
-    if (state == last_state_ && (now - last_status_time_).toSec() < 1.0) return;
-    last_status_ = status;
-    last_state_ = state;
-    last_status_time_ = now;
+  std::string NoPose(const std::string& frame, const std::string& problem) const {
+    return "no tf " + frame + " -> " + options_.base_frame_id + " (" + problem + ")";
+  }
+
+  // "waiting_for_pose: room R: <why>; not driving" on ~status and (throttled) the log; `stop`: a zero command.
+  void WaitForPose(const std::string& room, const std::string& why, bool stop) {
+    const std::string waiting = "waiting_for_pose: room " + room + ": " + why + "; not driving";
+    NODELET_WARN_THROTTLE(5.0, "%s", waiting.c_str());
+    if (stop) cmd_pub_.publish(geometry_msgs::Twist());
+    PublishStatus(waiting);
+  }
+
+  void PublishStatus(const std::string& status) {  // on a change of state, else at most once a second
+    if (!status_throttle_.Due(status, ros::Time::now().toSec())) return;
     std_msgs::String msg;
     msg.data = status;
     status_pub_.publish(msg);
@@ -339,19 +377,22 @@ class GoToRoomNodelet : public nodelet::Nodelet {
   GoToRoomNodeOptions options_;
   std::unique_ptr<RoomGoalPlanner> planner_;
   std::unique_ptr<GoToRoom> controller_;
-  std::unique_ptr<FloorGoToRoom> floor_;  // ~route grid, once a map arrived
+  std::unique_ptr<FloorGoToRoom> floor_;  // ~route grid, once a map arrived (~building_file: the current leg)
+  std::unique_ptr<BuildingGoal> building_;  // ~building_file
   tf2_ros::Buffer tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   ros::Publisher cmd_pub_, status_pub_, goal_pub_, path_pub_;
-  ros::Subscriber request_sub_, scan_sub_, detections_sub_, map_sub_;
+  ros::Subscriber request_sub_, scan_sub_, detections_sub_, map_sub_, ride_sub_;
+  std::vector<ros::Subscriber> localizer_subs_;
   ros::Timer watchdog_;
   std::mutex mutex_;
   std::optional<std::string> pending_;  // a request waiting for a pose
   std::string goal_frame_;              // frame of the active goal: global_frame_id or odom_frame_id
   std::optional<Reading> reading_;      // the last plate read (for eq. 15)
+  std::optional<bool> search_on_;       // the search drive as last set
   ros::Time last_valid_scan_;
-  std::string last_status_, last_state_;
-  ros::Time last_status_time_;
+  StatusThrottle status_throttle_;
+  BackgroundCalls calls_;  // service calls to other nodelets (never from a callback); destroyed first
 };
 
 }  // namespace doorplate_localization

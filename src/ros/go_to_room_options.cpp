@@ -2,6 +2,7 @@
 // rules between fields are the core's (GoToRoom, its WallFollowers, RoomGoalPlanner).
 #include "go_to_room_options.h"
 
+#include <memory>
 #include <set>
 #include <string>
 
@@ -14,7 +15,15 @@ const ParamTable<GoToRoomNodeOptions>& GoToRoomParamTable() {
       Param<O>("text_map_file", DOORPLATE_PARAM_FIELD(text_map_file),
                "the doorplate text map (docs/text-map-format.md); unreadable, invalid or empty: the nodelet does "
                "not start, naming it")
-          .DefaultText("(required)"),
+          .DefaultText("(required, or `building_file`)"),
+      Param<O>("building_file", DOORPLATE_PARAM_FIELD(building_file),
+               "a building of several floors (docs/building-format.md, a maps building file) instead of "
+               "`text_map_file`: route `grid` on its floors' maps, a room planned from the localizer's floor "
+               "(`amcl/floor`, once `amcl/state` is converged), via a lift when on another floor: drive to the "
+               "lift's stop, wait for `ride_lift`, search until localized on the room's floor, drive on"),
+      Param<O>("search_enable_service", DOORPLATE_PARAM_FIELD(search_enable_service),
+               "with `building_file`: the search drive's `std_srvs/SetBool` (the wall follower's `~enable`, "
+               "`~mode roam`), on while waiting to be localized, off before driving; \"\": none"),
       Param<O>("route", DOORPLATE_PARAM_FIELD(route),
                "`corridor`: wall following along the goal's corridor (the paper's; eq. 15 fallback); `grid`: a "
                "whole floor, a path planned over the `map` topic round corners and followed with the map pose",
@@ -99,14 +108,28 @@ GoToRoomNodeOptions GoToRoomOptionsFrom(const ParamSource& source) {
   }
   GoToRoomNodeOptions o;
   ApplyParamTable(table, source, &o);
-  if (o.text_map_file.empty()) {
+  if (!o.building_file.empty()) {
+    try {
+      o.building =
+          std::make_shared<const BuildingMaps>(LoadBuildingMaps(LoadBuildingFile(o.building_file), o.building_file));
+    } catch (const std::exception& e) {  // BuildingFileError names the file, the floor and the map file
+      throw ParameterError(source.Resolve("building_file") + " = '" + o.building_file +
+                           "' cannot be used: " + e.what());
+    }
+    o.route = "grid";
+    o.text_map_file = o.building_file + " (floor " + o.building->floors.front().id + ")";
+    o.text_map = *o.building->floors.front().text_map;
+  } else if (o.text_map_file.empty()) {
     throw ParameterError(source.Resolve("text_map_file") +
-                         " is required: the doorplate text map (docs/text-map-format.md), e.g. maps/x.text_map.yaml");
-  }
-  try {
-    o.text_map = LoadTextMap(o.text_map_file);
-  } catch (const std::exception& e) {  // TextMapError names the file and field
-    throw ParameterError(source.Resolve("text_map_file") + " = '" + o.text_map_file + "' cannot be used: " + e.what());
+                         " is required: the doorplate text map (docs/text-map-format.md), e.g. maps/x.text_map.yaml, " +
+                         "or " + source.Resolve("building_file"));
+  } else {
+    try {
+      o.text_map = LoadTextMap(o.text_map_file);
+    } catch (const std::exception& e) {  // TextMapError names the file and field
+      throw ParameterError(source.Resolve("text_map_file") + " = '" + o.text_map_file +
+                           "' cannot be used: " + e.what());
+    }
   }
   if (o.text_map.landmarks.empty()) {
     throw ParameterError(source.Resolve("text_map_file") + " = '" + o.text_map_file +

@@ -2,6 +2,7 @@
 // (GoToRoomParamTable) is the loader, the docs/parameters.md table and the config/go_to_room.yaml check.
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include <ros/node_handle.h>
@@ -9,6 +10,7 @@
 #include "doorplate_localization/behaviour/floor_go_to_room.h"
 #include "doorplate_localization/behaviour/go_to_room.h"
 #include "doorplate_localization/behaviour/room_goal_planner.h"
+#include "doorplate_localization/maps/building_map.h"
 #include "doorplate_localization/maps/text_map.h"
 #include "doorplate_localization/ros/param_reader.h"
 #include "doorplate_localization/ros/param_table.h"
@@ -32,6 +34,16 @@ struct GoToRoomNodeOptions {
   // ~turn_speed_rps, ~face_tolerance_rad from the same parameters as the corridor controller.
   std::string route = "corridor";
   FloorGoToRoomOptions floor;
+  // ~building_file: a building of several floors (a maps building file, docs/building-format.md); its floors'
+  // grids and text maps and its lifts replace ~text_map_file and the map topic, the route is grid, and a room
+  // is planned from the localizer's floor (topics amcl/floor and amcl/state), via a lift when it is on another
+  // (building_goal.h). text_map holds the first floor's text map.
+  std::string building_file;
+  std::shared_ptr<const BuildingMaps> building;
+  // ~search_enable_service: the search drive's std_srvs/SetBool (WallFollowerNodelet ~mode roam: ~enable),
+  // on while a building goal waits for the localizer to converge (at first, and after a lift ride), off
+  // before it drives; "": none (something else must move the robot to read plates).
+  std::string search_enable_service = "corridor_follower/enable";
   // The localizer's frame: pose = tf map -> base_link (~global_frame_id, amcl's name; ~map_frame_id deprecated).
   std::string global_frame_id = "map";
   std::string odom_frame_id = "odom";      // the eq. 15 fallback drives in this frame

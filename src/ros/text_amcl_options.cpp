@@ -7,6 +7,8 @@
 #include <memory>
 #include <string>
 
+#include "text_amcl_building.h"
+
 namespace doorplate_localization {
 namespace {
 
@@ -161,6 +163,25 @@ const ParamTable<O>& TextAmclParamTable() {
       Param<O>("text_map_file", DOORPLATE_PARAM_FIELD(text_map_file),
                "(ours) the doorplate map (docs/text-map-format.md); \"\", missing or broken: an error naming the "
                "file, and localization with the laser alone"),
+      Param<O>("building_file", DOORPLATE_PARAM_FIELD(building_file),
+               "(ours) a building of several floors (docs/building-format.md, a maps building file: each floor's "
+               "`occupancy_map` and `text_map`, the lifts); set: the floors' maps come from it (not `map_file`, "
+               "`text_map_file`, `map`, `static_map`; `set_map` is refused), the current floor's grid is latched on "
+               "`map`, its plates on `text_landmarks`, its id on `~floor`; unusable: the nodelet does not start, "
+               "naming the file"),
+      Param<O>("start_floor", DOORPLATE_PARAM_FIELD(start_floor),
+               "(ours) the id of the floor the robot starts on; \"\": unknown (the plates decide; the first floor's "
+               "map until then); without `building_file` the id of the one map's floor"),
+      Param<O>("floor_misread_probability", DOORPLATE_PARAM_FIELD(floor_belief.misread_probability),
+               "(ours) the chance that a reading names a room of another floor (mcl/floor_belief.h: ε)",
+               r::Holds("in (0, 0.5)", [](double v) { return v > 0.0 && v < 0.5; })),
+      Param<O>("floor_change_probability", DOORPLATE_PARAM_FIELD(floor_belief.floor_change_probability),
+               "(ours) the chance that the robot changed floors unseen between two informative readings",
+               r::Holds("in [0, 1)", [](double v) { return v >= 0.0 && v < 1.0; })),
+      Param<O>("floor_certain_probability", DOORPLATE_PARAM_FIELD(floor_belief.certain_probability),
+               "(ours) a floor is certain (and its map current) at this belief; `~state` is converged only on a "
+               "certain floor",
+               r::Holds("in (0.5, 1)", [](double v) { return v > 0.5 && v < 1.0; })),
       Param<O>("text_min_confidence", F(filter.text_min_confidence), "readings below are ignored", r::Probability()),
       Param<O>("text_reseed_fraction", F(filter.text_reseed_fraction),
                "share of particles reseeded at the compatible plates while not converged or when a reading "
@@ -251,7 +272,9 @@ TextAmclNodeOptions TextAmclOptionsFrom(const ParamSource& source) {
     session.start_with_global_localization = false;
     session.initial_pose = Pose2D{1.0, 1.0, 0.0};  // inside the room, whatever the map the user's pose is for
     (void)TextAmclSession(session, room, plates);
+    ValidateFloorBeliefOptions(o.floor_belief);
   });
+  o.building = LoadLocalizerBuilding(o, source);
   return o;
 }
 

@@ -1,6 +1,8 @@
 // Checker node of corridor_sim_nodelet.test: the sim nodelet, loaded through pluginlib by a nodelet manager,
 // publishes scan, odom, tf, camera images on demand and ground truth that moves on cmd_vel. Every wait is on
-// a condition with a wall-clock timeout. Also checks LoadCorridorSimOptions against this node's parameters.
+// a condition with a wall-clock timeout; a ride_lift it cannot make (one world, no lifts) is refused naming the
+// topic and the message, and ~floor says the world. Also checks LoadCorridorSimOptions against this node's
+// parameters, a building of several floors' worlds included.
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -14,6 +16,7 @@
 #include <ros/ros.h>
 #include <sensor_msgs/Image.h>
 #include <sensor_msgs/LaserScan.h>
+#include <std_msgs/String.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
@@ -103,6 +106,29 @@ TEST(CorridorSimNodelet, DrivesForwardOnCmdVelAndStopsWhenCommandsStop) {
   EXPECT_TRUE(WaitFor([&] { return latest->twist.twist.linear.x == 0.0; }));
 }
 
+TEST(CorridorSimNodelet, RefusesARideItCannotMakeNamingTheTopicAndKeepsRunning) {
+  ros::NodeHandle nh;
+  const rostest_util::RosoutLog warnings;
+  std::string floor;
+  ros::Subscriber floor_sub = nh.subscribe<std_msgs::String>(
+      "corridor_sim/floor", 1, [&](const std_msgs::String::ConstPtr& m) { floor = m->data; });
+  ASSERT_TRUE(WaitFor([&] { return !floor.empty(); })) << "no latched corridor_sim/floor";
+  EXPECT_EQ(floor, LoadWorldFile(PrivateParam<std::string>("world")).name);
+  ros::Publisher ride = nh.advertise<std_msgs::String>("ride_lift", 1);
+  std_msgs::String msg;
+  msg.data = "A 3";
+  EXPECT_TRUE(WaitFor([&] { return warnings.Has("/ride_lift: 'A 3': no lift 'A'", "the robot stays"); }, kTimeoutS,
+                      [&] { ride.publish(msg); }));
+  msg.data = "A";
+  EXPECT_TRUE(WaitFor([&] { return warnings.Has("/ride_lift: 'A': expected '<lift id> <floor id>'"); }, kTimeoutS,
+                      [&] { ride.publish(msg); }));
+  int scans = 0;
+  ros::Subscriber scan_sub =
+      nh.subscribe<sensor_msgs::LaserScan>("scan", 5, [&](const sensor_msgs::LaserScan::ConstPtr&) { ++scans; });
+  EXPECT_TRUE(WaitFor([&] { return scans >= 5; })) << "the simulator stopped after the refused rides";
+  EXPECT_EQ(floor, LoadWorldFile(PrivateParam<std::string>("world")).name);
+}
+
 // LoadCorridorSimOptions, on parameters set under this node's private namespace.
 TEST(LoadCorridorSimOptions, MissingWorldIsAnErrorNamingTheParameter) {
   ros::NodeHandle nh("~no_world");
@@ -164,6 +190,35 @@ TEST(LoadCorridorSimOptions, CameraSizeAndIntrinsicsOverrideTheWorldsAndAreCheck
   } catch (const ParameterError& e) {
     EXPECT_NE(std::string::npos, std::string(e.what()).find(nh.resolveName("camera/cy_px"))) << e.what();
   }
+}
+
+TEST(LoadCorridorSimOptions, ABuildingGivesEveryFloorsWorldWithTheStartFloorsSensors) {
+  const std::string building = std::string(DOORPLATE_SOURCE_DIR) + "/worlds/hospital_two_floors.building.yaml";
+  ros::NodeHandle nh("~building");
+  nh.setParam("building", building);
+  nh.setParam("floor", std::string("3"));
+  nh.setParam("camera/width_px", 1280);
+  const CorridorSimOptions o = LoadCorridorSimOptions(nh);
+  ASSERT_EQ(o.floor_worlds.size(), 2u);
+  EXPECT_EQ(o.start_floor, 1);
+  EXPECT_EQ(o.world.name, "hospital_floor3_ring");
+  EXPECT_EQ(o.building.lifts.size(), 2u);
+  for (const World& w : o.floor_worlds) EXPECT_EQ(w.sensors.camera.width_px, 1280) << w.name;
+  const auto load = [](const ros::NodeHandle& h) {
+    ros::NodeHandle copy(h);
+    return LoadCorridorSimOptions(copy);
+  };
+  nh.setParam("floor", std::string("4"));
+  rostest_util::ExpectLoadErrorNaming<ParameterError>(load, nh, "floor");
+  nh.setParam("floor", std::string("3"));
+  nh.setParam("world", PrivateParam<std::string>("world"));  // both: refused
+  rostest_util::ExpectLoadErrorNaming<ParameterError>(load, nh, "building");
+  nh.deleteParam("building");
+  rostest_util::ExpectLoadErrorNaming<ParameterError>(load, nh, "floor");  // a world has none
+  nh.deleteParam("floor");
+  nh.setParam("building", std::string(DOORPLATE_SOURCE_DIR) + "/maps/hospital_two_floors.building.yaml");
+  nh.deleteParam("world");  // a maps building file names no worlds
+  rostest_util::ExpectLoadErrorNaming<ParameterError>(load, nh, "building");
 }
 
 TEST(LoadCorridorSimOptions, ReadsValuesOverDefaults) {

@@ -31,5 +31,27 @@ TEST(GoToRoomConversions, ATwistHasOnlyForwardSpeedAndYawRate) {
   EXPECT_EQ(twist.angular.x, 0.0);
 }
 
+TEST(GoToRoomConversions, APathHasOnePoseOfItsFrameAndStampPerWaypoint) {
+  const nav_msgs::Path path = ToPathMsg({{1.0, 2.0}, {3.5, -1.0}}, "map", ros::Time(7, 0));
+  EXPECT_EQ(path.header.frame_id, "map");
+  ASSERT_EQ(path.poses.size(), 2u);
+  EXPECT_EQ(path.poses[1].header.frame_id, "map");
+  EXPECT_EQ(path.poses[1].header.stamp, ros::Time(7, 0));
+  EXPECT_DOUBLE_EQ(path.poses[1].pose.position.x, 3.5);
+  EXPECT_DOUBLE_EQ(path.poses[1].pose.position.y, -1.0);
+  EXPECT_DOUBLE_EQ(path.poses[1].pose.orientation.w, 1.0);
+  EXPECT_TRUE(ToPathMsg({}, "map", ros::Time(7, 0)).poses.empty());
+}
+
+TEST(StatusThrottle, PublishesEachNewStateAtOnceAndNewNumbersAtMostOnceASecond) {
+  StatusThrottle throttle;
+  EXPECT_TRUE(throttle.Due("idle", 0.0));
+  EXPECT_FALSE(throttle.Due("idle", 5.0)) << "the same text again";
+  EXPECT_TRUE(throttle.Due("following: room 205, 12.0 m to go", 5.1));
+  EXPECT_FALSE(throttle.Due("following: room 205, 11.9 m to go", 5.5));
+  EXPECT_TRUE(throttle.Due("following: room 205, 11.5 m to go", 6.2));
+  EXPECT_TRUE(throttle.Due("arrived: room 205", 6.3)) << "a new state is never held back";
+}
+
 }  // namespace
 }  // namespace doorplate_localization

@@ -1,0 +1,114 @@
+#include "text_amcl_building.h"
+
+#include <stdexcept>
+#include <utility>
+
+#include "doorplate_localization/maps/map_io.h"
+
+namespace doorplate_localization {
+
+std::shared_ptr<const BuildingMaps> LoadLocalizerBuilding(const TextAmclNodeOptions& options,
+                                                         const ParamSource& source) {
+  if (options.building_file.empty()) return nullptr;
+  std::shared_ptr<BuildingMaps> maps;
+  try {
+    maps = std::make_shared<BuildingMaps>(
+        LoadBuildingMaps(LoadBuildingFile(options.building_file), options.building_file));
+  } catch (const std::exception& e) {  // BuildingFileError names the file, the floor and the map file
+    throw ParameterError(source.Resolve("building_file") + " = '" + options.building_file +
+                         "' cannot be used: " + e.what());
+  }
+  if (!options.start_floor.empty() && maps->FloorIndex(options.start_floor) < 0) {
+    std::string ids;
+    for (const FloorMaps& floor : maps->floors) ids += (ids.empty() ? "" : ", ") + floor.id;
+    throw ParameterError(source.Resolve("start_floor") + ": no floor '" + options.start_floor + "' in " +
+                         options.building_file + " (floors: " + ids + ")");
+  }
+  return maps;
+}
+
+LocalizerTextMap LoadLocalizerTextMap(const TextAmclNodeOptions& options, const std::string& param) {
+  LocalizerTextMap loaded;
+  if (!options.session.setup.use_text) return loaded;
+  if (options.text_map_file.empty()) {
+    loaded.warning = param + " is not set: localizing with the laser alone";
+    return loaded;
+  }
+  try {
+    loaded.text_map = std::make_shared<const TextMap>(LoadTextMap(options.text_map_file));
+  } catch (const std::exception& e) {  // TextMapError names the file
+    loaded.problem = param + ": " + e.what();
+    return loaded;
+  }
+  if (loaded.text_map->frame_id != options.global_frame_id) {
+    loaded.warning = options.text_map_file + ": frame_id '" + loaded.text_map->frame_id +
+                     "' differs from global_frame_id '" + options.global_frame_id + "'; using it as " +
+                     options.global_frame_id;
+  }
+  return loaded;
+}
+
+std::shared_ptr<const BuildingMaps> OneFloorBuilding(const OccupancyGrid& grid,
+                                                     std::shared_ptr<const TextMap> text_map,
+                                                     const std::string& floor_id) {
+  auto maps = std::make_shared<BuildingMaps>();
+  maps->name = "one floor";
+  maps->floors.push_back({floor_id, grid, std::move(text_map)});
+  return maps;
+}
+
+std::shared_ptr<const BuildingMaps> LocalizerStartMaps(const TextAmclNodeOptions& options,
+                                                       std::shared_ptr<const TextMap> text_map,
+                                                       const std::string& map_param) {
+  if (options.building) return options.building;
+  if (options.map_file.empty()) return nullptr;
+  OccupancyGrid grid;
+  try {
+    grid = LoadOccupancyMap(options.map_file);
+  } catch (const std::exception& e) {  // MapFileError names the file and field
+    throw ParameterError(map_param + " = '" + options.map_file + "' cannot be used: " + e.what());
+  }
+  return OneFloorBuilding(grid, std::move(text_map), options.start_floor);
+}
+
+BuildingSessionOptions ToBuildingSessionOptions(const TextAmclNodeOptions& options) {
+  BuildingSessionOptions o;
+  o.session = options.session;
+  o.floor_belief = options.floor_belief;
+  o.start_floor = options.start_floor;
+  return o;
+}
+
+std::unique_ptr<BuildingSession> StartBuildingSession(const BuildingSessionOptions& options,
+                                                      std::shared_ptr<const BuildingMaps> maps,
+                                                      std::string* text_problem) {
+  text_problem->clear();
+  try {
+    auto session = std::make_unique<BuildingSession>(options, maps);
+    // The session makes a floor's filter when it first switches there: check every floor now, so that a map
+    // it refuses stops the start instead of a plate reading later.
+    for (const FloorMaps& floor : maps->floors) {
+      if (floor.id == session->floor_id()) continue;
+      try {
+        TextAmclSessionOptions check = options.session;
+        check.start_with_global_localization = true;
+        check.setup.filter.max_particles = check.setup.filter.min_particles;
+        (void)TextAmclSession(check, floor.grid, floor.text_map);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("floor '" + floor.id + "': " + e.what());
+      }
+    }
+    return session;
+  } catch (const std::invalid_argument& e) {
+    // The map, or the text map with it? On one floor, try without the text map (several floors need theirs
+    // to tell them apart: no fallback).
+    if (!maps || maps->floors.size() != 1 || !maps->floors.front().text_map) throw;
+    auto laser_only = std::make_shared<BuildingMaps>(*maps);
+    laser_only->floors.front().text_map = nullptr;
+    auto session = std::make_unique<BuildingSession>(options, laser_only);  // throws if the map is the problem
+    *text_problem = e.what();
+    return session;
+  }
+}
+
+}  // namespace doorplate_localization

@@ -1,0 +1,53 @@
+// Tests of LookupPlanarPose (tf_lookup.h) on a tf2 buffer filled by hand (no ROS master).
+#include "doorplate_localization/ros/tf_lookup.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "doorplate_localization/ros/pose_conversions.h"
+
+namespace doorplate_localization {
+namespace {
+
+class TfLookupTest : public testing::Test {
+ protected:
+  void SetUp() override {
+    ros::Time::init();
+    Add(Pose2D{1.0, 2.0, M_PI / 2}, "odom", "base_link", 10.0);
+    Add(Pose2D{2.0, 2.0, M_PI / 2}, "odom", "base_link", 11.0);
+  }
+  void Add(const Pose2D& pose, const std::string& parent, const std::string& child, double stamp_s) {
+    buffer_.setTransform(ToTransformStampedMsg(pose, parent, child, ros::Time(stamp_s)), "test");
+  }
+  tf2_ros::Buffer buffer_;
+  std::string problem_;
+};
+
+TEST_F(TfLookupTest, GivesThePlanarPoseAtTheStampInterpolatedOrTheLatest) {
+  const std::optional<Pose2D> middle =
+      LookupPlanarPose(buffer_, "odom", "base_link", ros::Time(10.5), 0.0, &problem_);
+  ASSERT_TRUE(middle.has_value()) << problem_;
+  EXPECT_NEAR(middle->x_m, 1.5, 1e-9);
+  EXPECT_NEAR(middle->y_m, 2.0, 1e-9);
+  EXPECT_NEAR(middle->theta_rad, M_PI / 2, 1e-9);
+  const std::optional<Pose2D> latest = LookupPlanarPose(buffer_, "odom", "base_link", ros::Time(0), 0.0, &problem_);
+  ASSERT_TRUE(latest.has_value());
+  EXPECT_NEAR(latest->x_m, 2.0, 1e-9);
+  // The inverse direction: odom in base_link.
+  const std::optional<Pose2D> inverse = LookupPlanarPose(buffer_, "base_link", "odom", ros::Time(11.0), 0.0, &problem_);
+  ASSERT_TRUE(inverse.has_value());
+  EXPECT_NEAR(inverse->theta_rad, -M_PI / 2, 1e-9);
+}
+
+TEST_F(TfLookupTest, AMissingFrameOrStampIsAProblemNamingBothFrames) {
+  EXPECT_FALSE(LookupPlanarPose(buffer_, "map", "base_link", ros::Time(0), 0.0, &problem_).has_value());
+  EXPECT_EQ(problem_.rfind("no tf from 'base_link' to 'map': ", 0), 0u) << problem_;
+  EXPECT_FALSE(LookupPlanarPose(buffer_, "odom", "base_link", ros::Time(20.0), 0.0, &problem_).has_value());
+  EXPECT_EQ(problem_.rfind("no tf from 'base_link' to 'odom': ", 0), 0u) << problem_;
+}
+
+}  // namespace
+}  // namespace doorplate_localization
