@@ -43,6 +43,10 @@ BuildingSession::BuildingSession(const BuildingSessionOptions& options, std::sha
   sessions_.resize(maps_->floors.size());
   current_ = std::max(0, StartFloor(options_, *maps_));
   Session(current_);
+  // Every other floor's filter now, so that a map the session refuses is refused here, naming the floor,
+  // and not at the moment of a switch (each floor's filter has its own random stream: the start floor's
+  // run is the same either way).
+  for (int floor = 0; floor < static_cast<int>(sessions_.size()); ++floor) Session(floor);
 }
 
 TextAmclSession& BuildingSession::Session(int floor) {

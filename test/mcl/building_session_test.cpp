@@ -163,5 +163,16 @@ TEST(BuildingSession, RefusesAnUnknownStartFloorNamingTheFloors) {
   EXPECT_THROW(BuildingSession(TwoFloors::Options(), std::make_shared<BuildingMaps>()), std::invalid_argument);
 }
 
+TEST(BuildingSession, AFloorMapTheFilterRefusesIsRefusedAtConstructionNamingTheFloor) {
+  TwoFloors b;
+  b.maps->floors[1].text_map = std::make_shared<TextMap>();  // no plates: nothing to read on floor 3
+  try {
+    BuildingSession session(TwoFloors::Options(), b.maps);
+    FAIL() << "accepted floor 3 without plates";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("floor '3': ", 0), 0u) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace doorplate_localization

@@ -1,5 +1,5 @@
 // BuildingSession: Text AMCL on a building of several floors (issue 17 item 5). One TextAmclSession per
-// floor (made when the floor is first used), one of them current; a FloorBelief (floor_belief.h) over the
+// floor (all made at construction, the start floor's first), one of them current; a FloorBelief (floor_belief.h) over the
 // floors, updated by every plate reading. The current session gets the odometry, scans and readings; when
 // the belief becomes certain of another floor (a plate of floor 3 while on floor 2's map: after a lift ride,
 // or from an unknown start) the building switches maps without a restart: the new floor's session starts
@@ -87,7 +87,7 @@ class BuildingSession {
   };
 
   TextAmclSession& Current() { return *sessions_[static_cast<size_t>(current_)]; }
-  TextAmclSession& Session(int floor);  // made on first use
+  TextAmclSession& Session(int floor);  // made on first use (the constructor uses every floor)
   void Remember(double stamp_s, const Pose2D& base_in_odom, const LocalizationScan* scan);
   void Forget(double now_s);
   std::vector<bool> FloorsWithRoom(const std::string& text) const;
