@@ -64,15 +64,8 @@ LocalizeBuilding LoadExperimentBuilding(const std::string& command, const std::s
   }
   const std::filesystem::path grid_path = std::filesystem::path(text_path).parent_path() / text_map->occupancy_map;
   OccupancyGrid grid = LoadOccupancyMap(grid_path.string());
-  auto maps = std::make_shared<BuildingMaps>();
-  maps->name = world.name;
-  maps->floors.push_back({world.name, grid, text_map});
-  LocalizeBuilding building;
-  building.name = world.name;
-  building.worlds.push_back(std::move(world));
-  building.maps = maps;
-  building.ground_truth_grids.push_back(std::move(grid));
-  return building;
+  OccupancyGrid ground_truth = grid;
+  return OneFloorBuilding(std::move(world), std::move(grid), std::move(text_map), std::move(ground_truth));
 }
 
 }  // namespace doorplate_localization

@@ -328,15 +328,7 @@ GotoSummary Summarize(const GotoEvalResult& result) {
 
 GotoEvalResult RunGotoEval(const World& world, const OccupancyGrid& grid, std::shared_ptr<const TextMap> text_map,
                            const GotoEvalOptions& options) {
-  LocalizeBuilding building;
-  building.name = world.name;
-  building.worlds = {world};
-  auto maps = std::make_shared<BuildingMaps>();
-  maps->name = world.name;
-  maps->floors.push_back({world.name, grid, std::move(text_map)});
-  building.maps = maps;
-  building.ground_truth_grids = {grid};
-  return RunGotoEval(building, options);
+  return RunGotoEval(OneFloorBuilding(world, grid, std::move(text_map), grid), options);
 }
 
 GotoEvalResult RunGotoEval(const LocalizeBuilding& building, const GotoEvalOptions& options) {

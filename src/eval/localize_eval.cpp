@@ -295,15 +295,20 @@ LocalizeSummary Summarize(const LocalizeEvalResult& result) {
 LocalizeEvalResult RunLocalizeEval(const World& world, const OccupancyGrid& grid,
                                    std::shared_ptr<const TextMap> text_map, const OccupancyGrid& ground_truth_grid,
                                    const LocalizeEvalOptions& options) {
-  LocalizeBuilding building;
-  building.name = world.name;
-  building.worlds = {world};
+  return RunLocalizeEval(OneFloorBuilding(world, grid, std::move(text_map), ground_truth_grid), options);
+}
+
+LocalizeBuilding OneFloorBuilding(World world, OccupancyGrid grid, std::shared_ptr<const TextMap> text_map,
+                                  OccupancyGrid ground_truth_grid) {
   auto maps = std::make_shared<BuildingMaps>();
   maps->name = world.name;
-  maps->floors.push_back({world.name, grid, std::move(text_map)});
+  maps->floors.push_back({world.name, std::move(grid), std::move(text_map)});
+  LocalizeBuilding building;
+  building.name = world.name;
   building.maps = maps;
-  building.ground_truth_grids = {ground_truth_grid};
-  return RunLocalizeEval(building, options);
+  building.ground_truth_grids.push_back(std::move(ground_truth_grid));
+  building.worlds.push_back(std::move(world));
+  return building;
 }
 
 LocalizeEvalResult RunLocalizeEval(const LocalizeBuilding& building, const LocalizeEvalOptions& options) {

@@ -167,4 +167,8 @@ struct LocalizeBuilding {
 };
 LocalizeEvalResult RunLocalizeEval(const LocalizeBuilding& building, const LocalizeEvalOptions& options);
 
+// A world as a one-floor building (floor id = the world's name) with the maps the robot knows.
+LocalizeBuilding OneFloorBuilding(World world, OccupancyGrid grid, std::shared_ptr<const TextMap> text_map,
+                                  OccupancyGrid ground_truth_grid);
+
 }  // namespace doorplate_localization

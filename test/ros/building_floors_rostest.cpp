@@ -25,6 +25,7 @@ namespace {
 
 using rostest_util::PrivateParam;
 using rostest_util::StartsWith;
+using rostest_util::TruthNear;
 using rostest_util::WaitFor;
 
 Pose2D PoseOf(const geometry_msgs::Pose& p) { return {p.position.x, p.position.y, tf2::getYaw(p.orientation)}; }
@@ -66,19 +67,7 @@ struct Listener {
         }));
   }
 
-  // The ground truth closest in time to `stamp`; null if none within 0.1 s.
-  nav_msgs::Odometry::ConstPtr TruthAt(const ros::Time& stamp) const {
-    nav_msgs::Odometry::ConstPtr best;
-    double best_dt = 0.1;
-    for (const auto& m : truth) {
-      const double dt = std::fabs((m->header.stamp - stamp).toSec());
-      if (dt <= best_dt) {
-        best_dt = dt;
-        best = m;
-      }
-    }
-    return best;
-  }
+  nav_msgs::Odometry::ConstPtr TruthAt(const ros::Time& stamp) const { return TruthNear(truth, stamp); }
   const std::string& Status() const {
     static const std::string none;
     return statuses.empty() ? none : statuses.back();

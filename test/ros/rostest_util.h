@@ -4,6 +4,7 @@
 // checkers are single-threaded (callbacks run inside WaitFor, on the global callback queue).
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <deque>
@@ -11,6 +12,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <nav_msgs/Odometry.h>
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Log.h>
@@ -32,6 +34,22 @@ inline bool WaitFor(const std::function<bool()>& condition, double timeout_s = 3
 }
 
 inline bool StartsWith(const std::string& text, const std::string& prefix) { return text.rfind(prefix, 0) == 0; }
+
+// The ground-truth message (the simulator's base_pose_ground_truth) closest in time to `stamp` among
+// `truth`; null if none is within `max_dt_s`.
+inline nav_msgs::Odometry::ConstPtr TruthNear(const std::deque<nav_msgs::Odometry::ConstPtr>& truth,
+                                              const ros::Time& stamp, double max_dt_s = 0.1) {
+  nav_msgs::Odometry::ConstPtr best;
+  double best_dt = max_dt_s;
+  for (const auto& m : truth) {
+    const double dt = std::fabs((m->header.stamp - stamp).toSec());
+    if (dt <= best_dt) {
+      best_dt = dt;
+      best = m;
+    }
+  }
+  return best;
+}
 
 // The checker's private parameter ~name; a missing or mistyped one is a test failure ("missing ~name")
 // and gives T{}.

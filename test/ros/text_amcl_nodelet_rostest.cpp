@@ -40,6 +40,7 @@
 namespace doorplate_localization {
 namespace {
 
+using rostest_util::TruthNear;
 using rostest_util::WaitFor;
 
 double DegreesBetween(double a_rad, double b_rad) {
@@ -85,19 +86,7 @@ struct Listener {
 
   bool Warned(const std::string& a, const std::string& b) const { return warnings.Has(a, b); }
 
-  // The ground-truth message closest in time to `stamp`; null if none within 0.1 s.
-  nav_msgs::Odometry::ConstPtr TruthAt(const ros::Time& stamp) const {
-    nav_msgs::Odometry::ConstPtr best;
-    double best_dt = 0.1;
-    for (const auto& m : truth) {
-      const double dt = std::fabs((m->header.stamp - stamp).toSec());
-      if (dt <= best_dt) {
-        best_dt = dt;
-        best = m;
-      }
-    }
-    return best;
-  }
+  nav_msgs::Odometry::ConstPtr TruthAt(const ros::Time& stamp) const { return TruthNear(truth, stamp); }
 };
 
 Listener* listener = nullptr;
