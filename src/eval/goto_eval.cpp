@@ -95,7 +95,7 @@ class GotoRun {
     session.session.initial_covariance =
         Eigen::Vector3d(var_xy, var_xy, options.initial_std_rad * options.initial_std_rad).asDiagonal();
     session.start_floor = trial_.start_floor;
-    session_ = std::make_unique<BuildingSession>(session, SessionMaps(maps, options.use_text));
+    session_ = std::make_unique<BuildingSession>(session, SessionMaps(setup_.building.maps, options.use_text));
     if (options.use_text) {
       TextExtractorOptions extractor = options.extractor;
       extractor.tracker.fx_px = sim_.camera().intrinsics().fx_px;
@@ -168,13 +168,6 @@ class GotoRun {
     ContourSteeringOptions o = options.search;
     o.cruise_speed_mps = options.go.follower.cruise_speed_mps;
     return o;
-  }
-  static std::shared_ptr<const BuildingMaps> SessionMaps(const BuildingMaps& maps, bool use_text) {
-    auto copy = std::make_shared<BuildingMaps>(maps);
-    if (!use_text) {
-      for (FloorMaps& floor : copy->floors) floor.text_map = nullptr;
-    }
-    return copy;
   }
   int Floors() const { return static_cast<int>(setup_.building.worlds.size()); }
   // Nothing is drawn for floors in a one-floor building (its trials stay draw for draw).

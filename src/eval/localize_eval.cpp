@@ -49,7 +49,7 @@ class TrialRun {
     session.session.setup.filter.random_seed = seed_;
     session.session.setup.use_text = options.method == LocalizeMethod::kTextAmcl;
     session.session.start_with_global_localization = true;
-    session_ = std::make_unique<BuildingSession>(session, SessionMaps(building, session.session.setup.use_text));
+    session_ = std::make_unique<BuildingSession>(session, SessionMaps(building.maps, session.session.setup.use_text));
     if (session.session.setup.use_text) {
       TextExtractorOptions extractor = options.extractor;
       extractor.tracker.fx_px = sim_.camera().intrinsics().fx_px;
@@ -107,13 +107,6 @@ class TrialRun {
     return std::uniform_int_distribution<int>(0, floors - 1)(rng_);
   }
   const std::string& FloorId(int floor) const { return building_.maps->floors[static_cast<size_t>(floor)].id; }
-  // The maps the session gets: laser only (amcl) drops the text maps.
-  static std::shared_ptr<const BuildingMaps> SessionMaps(const LocalizeBuilding& building, bool use_text) {
-    if (use_text) return building.maps;
-    auto maps = std::make_shared<BuildingMaps>(*building.maps);
-    for (FloorMaps& floor : maps->floors) floor.text_map = nullptr;
-    return maps;
-  }
 
   static SimulatorOptions SimOptions(std::uint64_t seed) {
     SimulatorOptions o;
@@ -296,6 +289,13 @@ LocalizeEvalResult RunLocalizeEval(const World& world, const OccupancyGrid& grid
                                    std::shared_ptr<const TextMap> text_map, const OccupancyGrid& ground_truth_grid,
                                    const LocalizeEvalOptions& options) {
   return RunLocalizeEval(OneFloorBuilding(world, grid, std::move(text_map), ground_truth_grid), options);
+}
+
+std::shared_ptr<const BuildingMaps> SessionMaps(std::shared_ptr<const BuildingMaps> maps, bool use_text) {
+  if (use_text) return maps;
+  auto laser_only = std::make_shared<BuildingMaps>(*maps);
+  for (FloorMaps& floor : laser_only->floors) floor.text_map = nullptr;
+  return laser_only;
 }
 
 LocalizeBuilding OneFloorBuilding(World world, OccupancyGrid grid, std::shared_ptr<const TextMap> text_map,

@@ -167,6 +167,9 @@ struct LocalizeBuilding {
 };
 LocalizeEvalResult RunLocalizeEval(const LocalizeBuilding& building, const LocalizeEvalOptions& options);
 
+// The maps a localization session gets: `maps` with use_text, else a copy without its text maps (amcl).
+std::shared_ptr<const BuildingMaps> SessionMaps(std::shared_ptr<const BuildingMaps> maps, bool use_text);
+
 // A world as a one-floor building (floor id = the world's name) with the maps the robot knows.
 LocalizeBuilding OneFloorBuilding(World world, OccupancyGrid grid, std::shared_ptr<const TextMap> text_map,
                                   OccupancyGrid ground_truth_grid);
