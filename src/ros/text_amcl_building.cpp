@@ -84,20 +84,8 @@ std::unique_ptr<BuildingSession> StartBuildingSession(const BuildingSessionOptio
                                                       std::string* text_problem) {
   text_problem->clear();
   try {
+    // The session makes every floor's filter now, so a floor map it refuses stops the start ("floor 'X': ...").
     auto session = std::make_unique<BuildingSession>(options, maps);
-    // The session makes a floor's filter when it first switches there: check every floor now, so that a map
-    // it refuses stops the start instead of a plate reading later.
-    for (const FloorMaps& floor : maps->floors) {
-      if (floor.id == session->floor_id()) continue;
-      try {
-        TextAmclSessionOptions check = options.session;
-        check.start_with_global_localization = true;
-        check.setup.filter.max_particles = check.setup.filter.min_particles;
-        (void)TextAmclSession(check, floor.grid, floor.text_map);
-      } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument("floor '" + floor.id + "': " + e.what());
-      }
-    }
     return session;
   } catch (const std::invalid_argument& e) {
     // The map, or the text map with it? On one floor, try without the text map (several floors need theirs

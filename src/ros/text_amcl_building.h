@@ -47,7 +47,7 @@ std::shared_ptr<const BuildingMaps> OneFloorBuilding(const OccupancyGrid& grid,
 // The BuildingSession the node options ask for (session, floor belief, start floor).
 BuildingSessionOptions ToBuildingSessionOptions(const TextAmclNodeOptions& options);
 
-// A session on `maps`; every floor's map is checked by a session now (not at the first switch there). A
+// A session on `maps`; every floor's map is checked by the session now (not at the first switch there). A
 // one-floor building whose text map the session refuses (e.g. one without landmarks) runs laser only:
 // *text_problem says why (else ""), and the session's maps have no text map. Throws std::invalid_argument when
 // the maps cannot be used at all (the grid, or any floor of a building: "floor '3': ...").
