@@ -20,6 +20,7 @@ const FloorExplorerOptions& Checked(const FloorExplorerOptions& o) {
   Require(o.revisit_radius_m > 0, "revisit_radius_m", "must be > 0");
   Require(o.max_pass_distance_m > o.min_revisit_travel_m, "max_pass_distance_m", "must be > min_revisit_travel_m");
   Require(o.turn_speed_rps > 0, "turn_speed_rps", "must be > 0");
+  Require(o.read_latency_window_s >= 0, "read_latency_window_s", "must be >= 0");
   Require(o.straight_before_turn_m >= 0, "straight_before_turn_m", "must be >= 0");
   Require(o.straight_bearing_rad > 0, "straight_bearing_rad", "must be > 0");
   Require(o.turn_heading_tolerance_rad > 0 && o.turn_heading_tolerance_rad < M_PI / 2, "turn_heading_tolerance_rad",
@@ -52,29 +53,57 @@ const char* PassEndName(PassEnd end) {
 FloorExplorer::FloorExplorer(const FloorExplorerOptions& options)
     : options_(Checked(options)), steering_(options.steering) {}
 
-void FloorExplorer::OnPlateRead(const std::string& text) {
+FloorExplorer::StepRecord FloorExplorer::RecordAt(double stamp_s) const {
+  const StepRecord now{stamp_s, total_distance_m_, pass_distance_m(), last_pose_.theta_rad,
+                       straight_m_ >= options_.straight_before_turn_m,
+                       phase_ == ExplorePhase::kFollow && !turn_pending_, pass_};
+  if (history_.empty() || !std::isfinite(stamp_s) || stamp_s >= history_.back().stamp_s) return now;
+  // The last step at or before the stamp (the oldest one kept if the stamp is older still).
+  auto it = std::upper_bound(history_.begin(), history_.end(), stamp_s,
+                             [](double t, const StepRecord& r) { return t < r.stamp_s; });
+  return it == history_.begin() ? *it : *std::prev(it);
+}
+
+void FloorExplorer::OnPlateRead(const std::string& text, double stamp_s) {
   const std::string id = CanonicalRoomId(text);
   if (id.empty() || phase_ == ExplorePhase::kDone) return;
-  const auto it = first_read_at_m_.find(id);
-  if (it == first_read_at_m_.end()) {
-    first_read_at_m_[id] = total_distance_m_;
+  const StepRecord at = RecordAt(stamp_s);  // where the robot was when the camera saw the plate
+  const auto it = first_reads_.find(id);
+  if (it == first_reads_.end()) {
+    first_reads_[id] = {at.distance_m, at.heading_rad, at.pass};
     known_run_.clear();
+    drift_samples_.clear();
     return;
   }
-  // Not evidence of a closed loop: a turn (the camera sweeps over plates just read), the start of a pass
-  // (pass 2 begins beside the walls pass 1 saw), the same plate again a few metres on.
-  if (phase_ != ExplorePhase::kFollow || turn_pending_ || pass_distance_m() < options_.min_revisit_travel_m ||
-      total_distance_m_ - it->second < options_.min_revisit_travel_m) {
+  // Not evidence of a closed loop: a turn round or a corner (the camera sweeps over plates read on the way
+  // in, e.g. at the mouth of a dead-end branch on the way out), the start of a pass (pass 2 begins beside
+  // the walls pass 1 saw), the same plate again a few metres on; nor a reading from before this pass's
+  // state (a late report of a plate seen before a turn round).
+  if (!at.following || !at.on_straight || at.pass != pass_ || phase_ != ExplorePhase::kFollow || turn_pending_ ||
+      at.pass_distance_m < options_.min_revisit_travel_m ||
+      at.distance_m - it->second.distance_m < options_.min_revisit_travel_m) {
     return;
   }
-  if (std::find(known_run_.begin(), known_run_.end(), id) == known_run_.end()) known_run_.push_back(id);
+  if (std::find(known_run_.begin(), known_run_.end(), id) == known_run_.end()) {
+    known_run_.push_back(id);
+    // The same plate is seen square-on from the same side, so the headings of the two readings differ only by
+    // the odometry's heading drift in between.
+    if (it->second.pass == pass_) drift_samples_.push_back(NormalizeAngle(at.heading_rad - it->second.heading_rad));
+  }
   if (static_cast<int>(known_run_.size()) >= options_.revisit_plates) EndPass(PassEnd::kPlatesRevisited);
 }
 
 void FloorExplorer::EndPass(PassEnd why) {
   last_pass_end_ = why;
   ++passes_ended_;
+  // The corridor the pass started in, in today's odometry heading: its first straight heading plus the
+  // drift the re-read plates show (their first readings came after it in the same pass).
+  double drift_rad = 0.0;
+  for (const double d : drift_samples_) drift_rad += d / static_cast<double>(drift_samples_.size());
+  turn_heading_set_ = pass_heading_set_;
+  turn_heading_rad_ = NormalizeAngle(pass_heading_rad_ + drift_rad);
   known_run_.clear();
+  drift_samples_.clear();
   if (pass_ >= options_.passes) {
     phase_ = ExplorePhase::kDone;
     return;
@@ -84,7 +113,20 @@ void FloorExplorer::EndPass(PassEnd why) {
 }
 
 VelocityCommand FloorExplorer::Step(const std::vector<float>& ranges_m, double angle_min_rad,
-                                    double angle_increment_rad, const Pose2D& pose) {
+                                    double angle_increment_rad, const Pose2D& pose, double stamp_s) {
+  const VelocityCommand command = Advance(ranges_m, angle_min_rad, angle_increment_rad, pose);
+  if (std::isfinite(stamp_s)) {
+    if (!history_.empty() && stamp_s < history_.back().stamp_s) history_.clear();  // time jumped back
+    history_.push_back(RecordAt(stamp_s));
+    while (history_.size() > 1 && stamp_s - history_.front().stamp_s > options_.read_latency_window_s) {
+      history_.pop_front();
+    }
+  }
+  return command;
+}
+
+VelocityCommand FloorExplorer::Advance(const std::vector<float>& ranges_m, double angle_min_rad,
+                                       double angle_increment_rad, const Pose2D& pose) {
   if (!has_pose_) {
     has_pose_ = true;
     last_pose_ = pass_start_pose_ = pose;
@@ -102,13 +144,13 @@ VelocityCommand FloorExplorer::Step(const std::vector<float>& ranges_m, double a
       pass_heading_set_ = true;  // the direction of the corridor the pass started in
       pass_heading_rad_ = pose.theta_rad;
     }
-    // Turn round beside a straight wall, heading as the pass started: back in the corridor it started in,
-    // not in a side corridor (where turning round and following the same side would re-trace pass 1).
-    // Without a heading (no straight stretch in the whole pass), or still no such place after driving
-    // 2 × min_revisit_travel_m more, any straight stretch will do.
-    const bool heading_ok = !pass_heading_set_ ||
+    // Turn round beside a straight wall, heading as the pass started (corrected for the odometry's drift):
+    // back in the corridor it started in, not in a side corridor (where turning round and following the same
+    // side would re-trace the pass just ended). Without a heading (no straight stretch in the whole pass), or
+    // still no such place after driving 2 × min_revisit_travel_m more, any straight stretch will do.
+    const bool heading_ok = !turn_heading_set_ ||
                             total_distance_m_ - turn_pending_since_m_ > 2.0 * options_.min_revisit_travel_m ||
-                            std::fabs(NormalizeAngle(pose.theta_rad - pass_heading_rad_)) <=
+                            std::fabs(NormalizeAngle(pose.theta_rad - turn_heading_rad_)) <=
                                 options_.turn_heading_tolerance_rad;
     if (turn_pending_ && straight_m_ >= options_.straight_before_turn_m && heading_ok) {
       turn_pending_ = false;

@@ -128,7 +128,7 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
       ++result.scans;
       VelocityCommand cmd;
       if (explore) {
-        cmd = explorer.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, sim.odom_pose());
+        cmd = explorer.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, sim.odom_pose(), sim.time_s());
         NotePassEnd(explorer, &result);
         if (explorer.phase() == ExplorePhase::kDone) break;
       } else {
@@ -141,7 +141,7 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
       ++next_frame;
       for (const PlateReport& report : extractor->Process(sim.CameraImage(), sim.time_s())) {
         if (explore) {
-          explorer.OnPlateRead(report.text);
+          explorer.OnPlateRead(report.text, report.stamp_s);
           NotePassEnd(explorer, &result);
         }
         if (!text) {

@@ -71,7 +71,8 @@ class WallFollowerNodelet : public nodelet::Nodelet {
   void OnDetections(const TextDetectionArray::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
     const int ended = explorer_->passes_ended();
-    for (const std::string& text : CrossedPlateTexts(*msg)) explorer_->OnPlateRead(text);
+    // Judged where the robot was when the camera saw the plate (the report comes later on a loaded machine).
+    for (const std::string& text : CrossedPlateTexts(*msg)) explorer_->OnPlateRead(text, msg->header.stamp.toSec());
     if (explorer_->passes_ended() != ended) {
       NODELET_INFO("floor exploration: pass %d ended (%s) after %.1f m; %d plates known", explorer_->pass(),
                    PassEndName(explorer_->last_pass_end()), explorer_->pass_distance_m(), explorer_->plates_known());
@@ -119,7 +120,8 @@ class WallFollowerNodelet : public nodelet::Nodelet {
       cmd = steer.command;
       state = steer.wall_found ? "roaming" : "no_wall";
     } else if (explorer_) {
-      cmd = explorer_->Step(scan->ranges, scan->angle_min + yaw_in_base, scan->angle_increment, odom_pose);
+      cmd = explorer_->Step(scan->ranges, scan->angle_min + yaw_in_base, scan->angle_increment, odom_pose,
+                            scan->header.stamp.toSec());
       state = explorer_->phase() == ExplorePhase::kFollow ? "pass_" + std::to_string(explorer_->pass())
                                                           : ExplorePhaseName(explorer_->phase());
     } else if (sweep_) {

@@ -54,6 +54,10 @@ const ParamTable<WallFollowerNodeOptions>& WallFollowerParamTable() {
       Param<O>("explore/max_pass_distance_m", DOORPLATE_PARAM_FIELD(explore.max_pass_distance_m),
                "explore: a pass that has not ended by then ends anyway; > explore/min_revisit_travel_m",
                r::Positive()),
+      Param<O>("explore/read_latency_window_s", DOORPLATE_PARAM_FIELD(explore.read_latency_window_s),
+               "explore: a plate reading is judged by where the robot was at its image's stamp, up to this long "
+               "ago (the text extractor's latency on a loaded machine)",
+               r::NonNegative()),
       Param<O>("base_frame_id", DOORPLATE_PARAM_FIELD(base_frame_id), "the scan is turned into this frame with tf",
                r::FrameId()),
       Param<O>("odom_frame_id", DOORPLATE_PARAM_FIELD(odom_frame_id),

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <deque>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "../sim/test_worlds.h"
@@ -60,8 +62,10 @@ struct ExploreRun {
 };
 
 // Closed loop in the Simulator (physics 100 Hz, laser and explorer 10 Hz, odometry as the pose). A plate
-// counts as read when its projection crosses the image's centre column within 4 m, as the tracker does.
-ExploreRun Explore(const World& world, FloorExplorerOptions options, double max_time_s = 1500.0) {
+// counts as read when its projection crosses the image's centre column within 4 m, as the tracker does; the
+// explorer hears of it `read_delay_s` later (the text extractor's latency), stamped with the crossing time.
+ExploreRun Explore(const World& world, FloorExplorerOptions options, double max_time_s = 1500.0,
+                   double read_delay_s = 0.0) {
   Simulator sim(world, SimulatorOptions{});
   FloorExplorer explorer(options);
   ExploreRun run;
@@ -69,11 +73,16 @@ ExploreRun Explore(const World& world, FloorExplorerOptions options, double max_
   std::vector<double> last_dx(world.signs.size(), NAN);
   const CameraIntrinsics& k = sim.camera().intrinsics();
   int last_pass = 1;
+  std::deque<std::pair<double, std::string>> reported;  // (crossing time, text), in order
   for (int step = 0; sim.time_s() < max_time_s; ++step) {
+    while (!reported.empty() && reported.front().first + read_delay_s <= sim.time_s() + 1e-9) {
+      explorer.OnPlateRead(reported.front().second, reported.front().first);
+      reported.pop_front();
+    }
     if (step % 10 == 0) {
       const SimulatedScan scan = sim.Scan();
       const VelocityCommand cmd = explorer.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad,
-                                                sim.odom_pose());
+                                                sim.odom_pose(), sim.time_s());
       if (explorer.pass() != last_pass || explorer.phase() == ExplorePhase::kDone) {
         if (run.pass_ends.size() < static_cast<std::size_t>(explorer.pass() - (explorer.phase() == ExplorePhase::kDone ? 0 : 1))) {
           run.pass_ends.push_back(explorer.last_pass_end());
@@ -92,7 +101,7 @@ ExploreRun Explore(const World& world, FloorExplorerOptions options, double max_
         const double dx = visible ? px.x - k.cx_px : NAN;
         if (std::isfinite(dx) && std::isfinite(last_dx[i]) && (dx >= 0) != (last_dx[i] >= 0)) {
           ++run.reads[i];
-          explorer.OnPlateRead(sign.text);
+          reported.emplace_back(sim.time_s(), sign.text);
         }
         last_dx[i] = dx;
       }
@@ -150,6 +159,26 @@ TEST(FloorExplorer, RoundARingWithABranchReadsBothWallsOfEveryCorridorAndClosesT
   EXPECT_LT(Norm(run.end_pose.Position() - world.start_pose.Position()), 8.0);
 }
 
+TEST(FloorExplorer, APlateReportedSecondsLateStillEndsThePassInTheCorridorItStartedIn) {
+  // The branch leaves the start corridor just after the plates that close pass 1: reported late, they end
+  // the pass while the robot is already in the branch, where turning round would re-trace pass 1.
+  const World world = RingWorld();
+  for (const double delay_s : {2.0, 5.0}) {
+    const ExploreRun run = Explore(world, FloorExplorerOptions{}, 1500.0, delay_s);
+    SCOPED_TRACE("read delay " + std::to_string(delay_s) + " s");
+    ASSERT_NO_FATAL_FAILURE(ExpectCoveredAndEndedByPlates(world, run));
+  }
+}
+
+TEST(FloorExplorer, TurnsInTheStartCorridorDespiteTheOdometrysHeadingDrift) {
+  // 0.01 rad of heading drift per metre: the odometry's heading is ~0.7 rad off after pass 1, so the start
+  // corridor's heading as first measured is no longer where to turn; the re-read plates show the drift.
+  World world = RingWorld();
+  world.sensors.odometry.heading_drift_rad_per_m = 0.01;
+  const ExploreRun run = Explore(world, FloorExplorerOptions{}, 1500.0, 3.0);
+  ASSERT_NO_FATAL_FAILURE(ExpectCoveredAndEndedByPlates(world, run));
+}
+
 TEST(FloorExplorer, OnePassFollowsOnlyOneWallOfTheRing) {
   const World world = RingWorld();
   FloorExplorerOptions options;
@@ -188,6 +217,54 @@ TEST(FloorExplorer, APlateReadAgainSoonAfterIsNotARevisit) {
   EXPECT_EQ(explorer.last_pass_end(), PassEnd::kPlatesRevisited);
   EXPECT_EQ(explorer.pass(), 1);  // the turn round waits for a straight stretch
   EXPECT_EQ(explorer.plates_known(), 1);
+}
+
+// Scans of a 40 m corridor seen along it (the steering drives straight on) and at 0.5 rad to it (the
+// steering turns, as in a corner); Drive feeds one of them at every 0.1 m, 0.4 m/s, as the pose goes along x.
+struct ScanFixture {
+  SimulatedScan straight = LaserSimulator(LaserOptions{}).CastExact(test::RectangleCorridor(40, 2), {5, 0.6, 0});
+  SimulatedScan corner = LaserSimulator(LaserOptions{}).CastExact(test::RectangleCorridor(40, 2), {5, 0.6, 0.5});
+  void Drive(FloorExplorer& explorer, const SimulatedScan& scan, double from_m, double to_m, double t0_s) const {
+    for (double x = from_m; x <= to_m + 1e-9; x += 0.1) {
+      explorer.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, {x, 0, 0}, t0_s + x / 0.4);
+    }
+  }
+};
+
+TEST(FloorExplorer, KnownPlatesSeenWhileTurningACornerDoNotEndThePass) {
+  const ScanFixture f;
+  FloorExplorer explorer(FloorExplorerOptions{});
+  f.Drive(explorer, f.straight, 0.0, 2.0, 0.0);
+  explorer.OnPlateRead("201");
+  explorer.OnPlateRead("202");
+  f.Drive(explorer, f.straight, 2.1, 30.0, 0.0);
+  f.Drive(explorer, f.corner, 30.1, 31.0, 0.0);  // the camera sweeps over the plates of the way in
+  explorer.OnPlateRead("201");
+  explorer.OnPlateRead("202");
+  EXPECT_EQ(explorer.last_pass_end(), PassEnd::kNotEnded);
+}
+
+TEST(FloorExplorer, APlateIsJudgedWhereTheCameraSawItNotWhereItsReportArrives) {
+  const ScanFixture f;
+  FloorExplorer seen_on_straight(FloorExplorerOptions{});
+  FloorExplorer seen_in_corner(FloorExplorerOptions{});
+  for (FloorExplorer* e : {&seen_on_straight, &seen_in_corner}) {
+    f.Drive(*e, f.straight, 0.0, 2.0, 0.0);
+    e->OnPlateRead("201");
+    e->OnPlateRead("202");
+    f.Drive(*e, f.straight, 2.1, 30.0, 0.0);
+  }
+  // Seen at 30 m on the straight, reported after the robot has reached a corner.
+  f.Drive(seen_on_straight, f.corner, 30.1, 32.0, 0.0);
+  seen_on_straight.OnPlateRead("201", 29.9 / 0.4);
+  seen_on_straight.OnPlateRead("202", 30.0 / 0.4);
+  EXPECT_EQ(seen_on_straight.last_pass_end(), PassEnd::kPlatesRevisited);
+  // Seen in a corner at 31 m, reported once the robot drives straight again.
+  f.Drive(seen_in_corner, f.corner, 30.1, 31.0, 0.0);
+  f.Drive(seen_in_corner, f.straight, 31.1, 34.0, 0.0);
+  seen_in_corner.OnPlateRead("201", 30.9 / 0.4);
+  seen_in_corner.OnPlateRead("202", 31.0 / 0.4);
+  EXPECT_EQ(seen_in_corner.last_pass_end(), PassEnd::kNotEnded);
 }
 
 TEST(FloorExplorer, RejectsInvalidOptionsNamingTheField) {
