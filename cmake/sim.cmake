@@ -2,8 +2,13 @@
 add_library(doorplate_sim
   src/sim/world.cpp
   src/sim/world_loader.cpp
+  src/sim/world_detail_fields.cpp
+  src/sim/world_detail_surfaces.cpp
+  src/sim/clutter_presets.cpp
+  src/sim/people.cpp
   src/sim/world_sensor_fields.cpp
   src/sim/laser_simulator.cpp
+  src/sim/laser_error_model.cpp
   src/sim/odometry_simulator.cpp
   src/sim/camera_renderer.cpp
   src/sim/sign_texture.cpp
@@ -32,8 +37,8 @@ install(TARGETS doorplate_sim doorplate_sim_bench doorplate_sim_snapshot doorpla
   RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(name world world_loader laser_simulator odometry_simulator camera_renderer simulator top_down_view
-               ground_truth_maps photo_world)
+  foreach(name world world_loader world_sensor_fields laser_simulator laser_error_model odometry_simulator camera_renderer simulator top_down_view
+               ground_truth_maps photo_world people clutter_presets world_detail_surfaces world_detail_fields)
     doorplate_add_core_test(${name}_test test/sim/${name}_test.cpp doorplate_sim)
   endforeach()
 endif()

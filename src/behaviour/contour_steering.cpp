@@ -31,6 +31,7 @@ ContourSteering::ContourSteering(const ContourSteeringOptions& o)
   Require(o.wall_side == "left" || o.wall_side == "right", "wall_side", "must be 'left' or 'right'");
   Require(o.wall_distance_m > 0, "wall_distance_m", "must be > 0");
   Require(o.min_look_ahead_m > 0, "min_look_ahead_m", "must be > 0");
+  CheckIsolatedReturnOptions(o.isolated_returns, "ContourSteeringOptions.isolated_returns.");
   Require(o.look_ahead_m >= o.min_look_ahead_m, "look_ahead_m", "must be >= min_look_ahead_m");
   Require(o.robot_clearance_m > 0 && o.robot_clearance_m <= o.wall_distance_m, "robot_clearance_m",
           "must be in (0, wall_distance_m]");
@@ -57,9 +58,10 @@ ContourSteeringResult ContourSteering::Step(const std::vector<float>& ranges_m, 
     if (!std::isfinite(r) || r <= 0.0 || r > o.max_range_m) continue;
     const double a = angle_min_rad + static_cast<double>(i) * angle_increment_rad;
     const Vec2 p{r * std::cos(a), -side_sign_ * r * std::sin(a)};
+    if (p.y < 0 && r <= reach) result.wall_found = true;  // glass returns a beam here and there
+    if (IsIsolatedReturn(ranges_m, i, o.isolated_returns)) continue;  // no obstacle: blocks no target
     points.push_back(p);
     if (p.x > 0 && std::fabs(p.y) <= o.robot_clearance_m) front_m = std::min(front_m, p.x);
-    if (p.y < 0 && r <= reach) result.wall_found = true;
   }
   // Towards a wall ahead the targets come closer, so the robot turns near it, not a look-ahead early.
   result.look_ahead_m = std::clamp(front_m - o.wall_distance_m, o.min_look_ahead_m, o.look_ahead_m);

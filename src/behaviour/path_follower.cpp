@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+
 namespace doorplate_localization {
 namespace {
 
@@ -33,6 +34,7 @@ const PathFollowerOptions& Validated(const PathFollowerOptions& o) {
   Require(o.face_tolerance_rad > 0 && o.face_tolerance_rad < M_PI / 2, "face_tolerance_rad", "must be in (0, pi/2)");
   Require(o.stop_distance_m >= 0 && std::isfinite(o.stop_distance_m), "stop_distance_m", "must be finite and >= 0");
   Require(Positive(o.front_half_width_m), "front_half_width_m", "must be finite and > 0");
+  CheckIsolatedReturnOptions(o.isolated_returns, "PathFollowerOptions.isolated_returns.");
   Require(Positive(o.progress_window_m), "progress_window_m", "must be finite and > 0");
   return o;
 }
@@ -108,7 +110,7 @@ double PathFollower::NearestAhead(const std::vector<float>& ranges_m, double ang
   double nearest = std::numeric_limits<double>::infinity();
   for (size_t i = 0; i < ranges_m.size(); ++i) {
     const double r = ranges_m[i];
-    if (!std::isfinite(r) || r <= 0.0) continue;
+    if (!std::isfinite(r) || r <= 0.0 || IsIsolatedReturn(ranges_m, i, options_.isolated_returns)) continue;
     const double a = angle_min_rad + static_cast<double>(i) * angle_increment_rad;
     const double x = r * std::cos(a), y = r * std::sin(a);
     if (x > 0.0 && std::fabs(y) <= options_.front_half_width_m) nearest = std::min(nearest, x);

@@ -30,6 +30,7 @@ WallFollower::WallFollower(const WallFollowerOptions& o)
   Require(o.side_max_range_m > o.wall_distance_m, "side_max_range_m", "must be > wall_distance_m");
   Require(o.max_angular_speed_rps > 0, "max_angular_speed_rps", "must be > 0");
   Require(o.front_half_width_m > 0, "front_half_width_m", "must be > 0");
+  CheckIsolatedReturnOptions(o.isolated_returns, "WallFollowerOptions.isolated_returns.");
   Require(o.width_sector_half_angle_deg > 0 && o.width_sector_half_angle_deg < 90, "width_sector_half_angle_deg",
           "must be in (0, 90)");
 }
@@ -45,7 +46,10 @@ CorridorObservation WallFollower::Observe(const std::vector<float>& ranges_m, do
     if (!std::isfinite(r) || r <= 0.0) continue;
     const double a = NormalizeAngle(angle_min_rad + static_cast<double>(i) * angle_increment_rad);
     const double x = r * std::cos(a), y = r * std::sin(a);
-    if (x > 0 && std::fabs(y) <= options_.front_half_width_m) obs.front_distance_m = std::min(obs.front_distance_m, x);
+    // An isolated return is no obstacle ahead, but may still be the wall (glass returns a beam here and there).
+    if (x > 0 && std::fabs(y) <= options_.front_half_width_m && !IsIsolatedReturn(ranges_m, i, options_.isolated_returns)) {
+      obs.front_distance_m = std::min(obs.front_distance_m, x);
+    }
     const bool sideways = std::fabs(std::fabs(a) - M_PI / 2) <= options_.width_sector_half_angle_deg * kDeg;
     if (sideways && a > 0) left_min = std::min(left_min, r);
     if (sideways && a < 0) right_min = std::min(right_min, r);

@@ -25,7 +25,9 @@ namespace doorplate_localization {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kMaxHitsPerColumn = 12;   // nearest surfaces kept per column (enough for rooms behind doors)
+constexpr int kMaxHitsPlain = 12;       // nearest surfaces kept per column (enough for rooms behind doors)
+constexpr int kMaxHitsDetailed = 24;    // ... in worlds with clutter, door frames, glass or people
+constexpr int kMaxGlassPerColumn = 4;   // glass panes blended per column (nearest first)
 constexpr double kNearDepthM = 0.02;    // surfaces closer than this along the optical axis are clipped
 constexpr double kDoorFrameM = 0.05;
 constexpr int kNoiseTableSize = 4096;   // indexed by 12 bits of a 16-bit random number
@@ -156,6 +158,9 @@ CameraRenderer::CameraRenderer(const World& world, const CameraOptions& options)
   if (options.pixel_noise_stddev > 0.0) {
     noise_table_ = GaussianQuantiles(kNoiseTableSize, options.pixel_noise_stddev);
   }
+  const bool detailed = !world.people.empty() || std::any_of(world.surfaces.begin(), world.surfaces.end(),
+                                                             [](const Surface& s) { return s.kind != SurfaceKind::kStructure; });
+  max_hits_ = detailed ? kMaxHitsDetailed : kMaxHitsPlain;
 }
 
 double CameraRenderer::RenderUnpitchedTransposed(const Pose2D& robot_pose, cv::Mat* transposed) const {
@@ -165,7 +170,8 @@ double CameraRenderer::RenderUnpitchedTransposed(const Pose2D& robot_pose, cv::M
   transposed->create(cols, rows, CV_8UC3);
 
   // Collect, per column, the nearest surfaces its ray crosses (sorted by depth).
-  std::vector<Hit> hits(static_cast<std::size_t>(cols) * kMaxHitsPerColumn);
+  const int max_hits = max_hits_;
+  std::vector<Hit> hits(static_cast<std::size_t>(cols) * max_hits);
   std::vector<int> hit_count(cols, 0);
   for (std::size_t si = 0; si < world_.surfaces.size(); ++si) {
     const Surface& surface = world_.surfaces[si];
@@ -201,13 +207,13 @@ double CameraRenderer::RenderUnpitchedTransposed(const Pose2D& robot_pose, cv::M
           surface.segment.a + std::clamp(s, 0.0, 1.0) * (surface.segment.b - surface.segment.a));
       const Hit hit{depth, std::clamp(s, 0.0, 1.0), std::min(std::fabs(s1 - s) * length, 1.0),
                     lit * DistanceShade(depth * ray_norm) * (0.8 + 0.2 * cos_incidence), static_cast<int>(si)};
-      Hit* list = &hits[static_cast<std::size_t>(c) * kMaxHitsPerColumn];
+      Hit* list = &hits[static_cast<std::size_t>(c) * max_hits];
       int& n = hit_count[c];
-      if (n == kMaxHitsPerColumn && depth >= list[n - 1].depth_m) continue;
-      int i = std::min(n, kMaxHitsPerColumn - 1);
+      if (n == max_hits && depth >= list[n - 1].depth_m) continue;
+      int i = std::min(n, max_hits - 1);
       for (; i > 0 && list[i - 1].depth_m > depth; --i) list[i] = list[i - 1];
       list[i] = hit;
-      n = std::min(n + 1, kMaxHitsPerColumn);
+      n = std::min(n + 1, max_hits);
     }
   }
 
@@ -218,10 +224,18 @@ double CameraRenderer::RenderUnpitchedTransposed(const Pose2D& robot_pose, cv::M
   for (int c = 0; c < cols; ++c) {
     cv::Vec3b* column = transposed->ptr<cv::Vec3b>(c);
     std::memcpy(transposed->ptr(c), background_column_.ptr(), static_cast<std::size_t>(rows) * 3);
-    std::array<std::pair<int, int>, kMaxHitsPerColumn + 2> open, next;
+    using Spans = std::array<std::pair<int, int>, kMaxHitsDetailed + 2>;
+    Spans open, next;
     int n_open = 1;
     open[0] = {0, rows};
-    const Hit* list = &hits[static_cast<std::size_t>(c) * kMaxHitsPerColumn];
+    // Glass does not cover what lies behind it: it is blended over the rows it had open, afterwards.
+    struct GlassRows {
+      int hit, r0, r1, n_open;
+      Spans open;
+    };
+    std::array<GlassRows, kMaxGlassPerColumn> glass;
+    int n_glass = 0;
+    const Hit* list = &hits[static_cast<std::size_t>(c) * max_hits];
     if (c == center_col && hit_count[c] > 0) center_depth_m = list[0].depth_m;
     for (int k = 0; k < hit_count[c] && n_open > 0; ++k) {
       const Surface& surface = world_.surfaces[list[k].surface];
@@ -231,6 +245,10 @@ double CameraRenderer::RenderUnpitchedTransposed(const Pose2D& robot_pose, cv::M
       };
       const int r0 = row_of(surface.z_max_m), r1 = row_of(surface.z_min_m);
       if (r0 >= r1) continue;
+      if (surface.kind == SurfaceKind::kGlass) {
+        if (n_glass < kMaxGlassPerColumn) glass[n_glass++] = {k, r0, r1, n_open, open};
+        continue;
+      }
       int n_next = 0;
       for (int i = 0; i < n_open; ++i) {
         const auto [a, b] = open[i];
@@ -245,6 +263,17 @@ double CameraRenderer::RenderUnpitchedTransposed(const Pose2D& robot_pose, cv::M
       }
       open = next;
       n_open = n_next;
+    }
+    for (int g = n_glass - 1; g >= 0; --g) {  // far to near
+      const Surface& pane = world_.surfaces[list[glass[g].hit].surface];
+      const cv::Vec3b tint = Bgr(pane.color, list[glass[g].hit].shade);
+      const double a = pane.camera_opacity;
+      for (int i = 0; i < glass[g].n_open; ++i) {
+        const int pa = std::max(glass[g].open[i].first, glass[g].r0), pb = std::min(glass[g].open[i].second, glass[g].r1);
+        for (int r = pa; r < pb; ++r) {
+          for (int ch = 0; ch < 3; ++ch) column[r][ch] = cv::saturate_cast<uchar>((1.0 - a) * column[r][ch] + a * tint[ch]);
+        }
+      }
     }
   }
   return center_depth_m;

@@ -13,7 +13,10 @@ namespace {
 constexpr double kMarginM = 0.5;
 constexpr double kMaxCells = 2e8;  // 200 MB of cells: a 700 m x 700 m building at 5 cm
 
-bool SpansHeight(const Surface& s, double height_m) { return s.z_min_m <= height_m && height_m <= s.z_max_m; }
+// People are not part of the ground truth (they move); everything else static is, glass included.
+bool SpansHeight(const Surface& s, double height_m) {
+  return s.kind != SurfaceKind::kPerson && s.z_min_m <= height_m && height_m <= s.z_max_m;
+}
 
 // Marks every cell the segment passes through (grid traversal in cell units), stepping one cell in x or
 // in y at a time so that consecutive cells share a side. The grid's origin has no rotation.
@@ -81,6 +84,7 @@ OccupancyGrid RasterizeWorld(const World& world, double resolution_m, double las
   }
   Vec2 lo = world.start_pose.Position(), hi = lo;
   for (const Surface& s : world.surfaces) {
+    if (s.kind == SurfaceKind::kPerson) continue;
     for (const Vec2& p : {s.segment.a, s.segment.b}) {
       lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
       hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "doorplate_localization/sim/people.h"
+
 namespace doorplate_localization {
 namespace {
 
@@ -28,6 +30,7 @@ Simulator::Simulator(World world, const SimulatorOptions& options)
       odometry_(world_.sensors.odometry),
       true_pose_(world_.start_pose) {
   if (world_.surfaces.empty()) BuildSurfaces(world_);
+  PlacePeople(world_, time_s_);
   camera_ = std::make_unique<CameraRenderer>(world_, world_.sensors.camera);
 }
 
@@ -40,7 +43,7 @@ void Simulator::SetCommand(double linear_mps, double angular_rps) {
 double Simulator::Clearance(const Pose2D& pose) const {
   double clearance = std::numeric_limits<double>::infinity();
   for (const Surface& s : world_.surfaces) {
-    if (s.z_min_m > kBumperHeightM) continue;
+    if (s.z_min_m > kBumperHeightM || s.kind == SurfaceKind::kPerson) continue;
     clearance = std::min(clearance, PointSegmentDistance(pose.Position(), s.segment));
   }
   return clearance;
@@ -75,15 +78,27 @@ void Simulator::Teleport(const Pose2D& pose) { true_pose_ = pose; }
 void Simulator::ChangeWorld(World floor_world, const Pose2D& pose) {
   world_ = std::move(floor_world);
   if (world_.surfaces.empty()) BuildSurfaces(world_);
+  PlacePeople(world_, time_s_);
+  people_time_s_ = time_s_;
   camera_ = std::make_unique<CameraRenderer>(world_, world_.sensors.camera);
   true_pose_ = pose;
   linear_mps_ = angular_rps_ = 0.0;
   bumped_ = false;
 }
 
-SimulatedScan Simulator::Scan() { return laser_.Simulate(world_, true_pose_, laser_rng_); }
+void Simulator::UpdatePeople() {
+  if (world_.people.empty() || people_time_s_ == time_s_) return;
+  PlacePeople(world_, time_s_);
+  people_time_s_ = time_s_;
+}
+
+SimulatedScan Simulator::Scan() {
+  UpdatePeople();
+  return laser_.Simulate(world_, true_pose_, laser_rng_);
+}
 
 cv::Mat Simulator::CameraImage() {
+  UpdatePeople();
   return camera_->Render(true_pose_, linear_mps_, angular_rps_, camera_rng_);
 }
 

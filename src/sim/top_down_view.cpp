@@ -33,10 +33,17 @@ void TopDownView::DrawWorld() {
     const Segment& s = world_.walls[wall].segment;
     return s.a + (offset_m / s.Length()) * (s.b - s.a);
   };
+  const double laser_z = world_.sensors.laser.mount_height_m;
   for (const Surface& s : world_.surfaces) {
     const bool wall_piece = s.wall_index >= 0 && s.z_min_m <= 0.0;
-    const cv::Scalar colour = wall_piece ? cv::Scalar(60, 60, 60) : cv::Scalar(200, 170, 150);
-    cv::line(image_, ToPixel(s.segment.a), ToPixel(s.segment.b), colour, wall_piece ? 3 : 1, cv::LINE_AA);
+    cv::Scalar colour = wall_piece ? cv::Scalar(60, 60, 60) : cv::Scalar(200, 170, 150);
+    int thickness = wall_piece ? 3 : 1;
+    if (s.kind != SurfaceKind::kStructure) {  // detail: thick where the laser sees it
+      static const cv::Scalar kColours[] = {{60, 60, 60}, {90, 90, 90}, {30, 120, 210}, {230, 190, 90}, {170, 0, 170}};
+      colour = kColours[static_cast<int>(s.kind)];
+      thickness = s.z_min_m <= laser_z && laser_z <= s.z_max_m ? 2 : 1;
+    }
+    cv::line(image_, ToPixel(s.segment.a), ToPixel(s.segment.b), colour, thickness, cv::LINE_AA);
   }
   for (const Door& door : world_.doors) {
     const Vec2 a = on_wall(door.wall_index, door.offset_m - door.width_m / 2);

@@ -9,6 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "doorplate_localization/common/yaml_reader.h"
+#include "world_detail_fields.h"
 #include "world_sensor_fields.h"
 
 namespace doorplate_localization {
@@ -113,9 +114,12 @@ void ParseDoorFields(const YamlField& f, Door* door) {
   door->room_depth_m = f.Positive("room_depth_m", door->room_depth_m);
   door->room_width_m = f.Positive("room_width_m", door->room_width_m);
   f.GetColor("color", &door->color);
+  ParseDoorDetail(f, door);
 }
 
-const std::set<std::string> kDoorFieldKeys = {"width_m", "height_m", "open", "room_depth_m", "room_width_m", "color"};
+const std::set<std::string> kDoorFieldKeys = {"width_m",      "height_m", "open",          "room_depth_m",
+                                              "room_width_m", "color",    "recess_m",      "frame_width_m",
+                                              "frame_depth_m", "frame_color"};
 
 void CheckDoor(const YamlField& f, const World& world, const Door& door) {
   const Wall& wall = world.walls[door.wall_index];
@@ -125,9 +129,11 @@ void CheckDoor(const YamlField& f, const World& world, const Door& door) {
   }
   if (door.height_m > world.wall_height_m) f.Fail("door height exceeds wall_height_m");
   if (door.room_width_m < door.width_m) f.Fail("room_width_m must be >= width_m");
+  CheckDoorDetail(f, world, door);
   for (const Door& other : world.doors) {
     if (other.wall_index == door.wall_index &&
-        std::abs(other.offset_m - door.offset_m) < (other.width_m + door.width_m) / 2) {
+        std::abs(other.offset_m - door.offset_m) <
+            (other.width_m + door.width_m) / 2 + other.frame_width_m + door.frame_width_m) {
       f.Fail("door '" + door.id + "' overlaps door '" + other.id + "'");
     }
   }
@@ -279,7 +285,7 @@ World ParseWorldYaml(const std::string& yaml_text, const std::string& source_nam
     const YamlField root = YamlField::Parse(yaml_text, source_name);
     root.RequireOnlyKeys({"format_version", "name", "description", "wall_height_m", "floor_color", "ceiling_color",
                           "robot", "walls", "doors", "door_rows", "plates", "distractors", "sensors",
-                          "lighting", "corridors"});
+                          "lighting", "corridors", "glass", "clutter", "people"});
     World world;
     world.source_file = source_name;
     world.format_version = root.Child("format_version").AsInt();
@@ -304,7 +310,13 @@ World ParseWorldYaml(const std::string& yaml_text, const std::string& source_nam
     }
     if (root.Has("lighting")) for (const YamlField& f : root.Child("lighting").Items()) ParseLightZone(f, &world);
     if (root.Has("corridors")) for (const YamlField& f : root.Child("corridors").Items()) ParseCorridor(f, &world);
+    if (root.Has("glass")) for (const YamlField& f : root.Child("glass").Items()) ParseGlass(f, idx.walls, &world);
+    if (root.Has("clutter")) {
+      for (const YamlField& f : root.Child("clutter").Items()) ParseClutter(f, idx.walls, &world);
+    }
+    if (root.Has("people")) for (const YamlField& f : root.Child("people").Items()) ParsePerson(f, &world);
     ParseRobot(root.Child("robot"), &world);
+    CheckStartOutsideClutter(root.Child("robot"), world);
     if (root.Has("sensors")) ParseSensorOptions(root.Child("sensors"), &world.sensors);
     BuildSurfaces(world);
     CheckStartIsFree(root, world);

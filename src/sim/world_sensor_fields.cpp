@@ -1,22 +1,65 @@
 #include "world_sensor_fields.h"
 
 #include <cmath>
+#include <string>
 
 namespace doorplate_localization {
 namespace {
 
+double Probability(const YamlField& f, const std::string& key, double fallback) {
+  const double p = f.NonNegative(key, fallback);
+  if (p > 1.0) f.Child(key).Fail("must be in [0, 1]");
+  return p;
+}
+
+void ParseFittedLaserErrors(const YamlField& f, FittedLaserErrorOptions* o) {
+  f.RequireOnlyKeys({"noise_base_m", "noise_fraction", "noise_grazing_gain", "dropout_probability", "dropout_per_m",
+                     "dropout_near_probability", "dropout_near_range_m", "dropout_grazing_probability",
+                     "dropout_grazing_from_deg", "depth_edge_m", "mixed_pixel_probability", "short_probability",
+                     "short_mean_m", "detection_range_m", "detection_edge_fraction"});
+  o->noise_base_m = f.NonNegative("noise_base_m", o->noise_base_m);
+  o->noise_fraction = f.NonNegative("noise_fraction", o->noise_fraction);
+  o->noise_grazing_gain = f.NonNegative("noise_grazing_gain", o->noise_grazing_gain);
+  o->dropout_probability = Probability(f, "dropout_probability", o->dropout_probability);
+  o->dropout_per_m = Probability(f, "dropout_per_m", o->dropout_per_m);
+  o->dropout_near_probability = Probability(f, "dropout_near_probability", o->dropout_near_probability);
+  o->dropout_near_range_m = f.NonNegative("dropout_near_range_m", o->dropout_near_range_m);
+  o->dropout_grazing_probability = Probability(f, "dropout_grazing_probability", o->dropout_grazing_probability);
+  o->dropout_grazing_from_deg = f.NonNegative("dropout_grazing_from_deg", o->dropout_grazing_from_deg);
+  if (o->dropout_grazing_from_deg >= 90.0) f.Child("dropout_grazing_from_deg").Fail("must be in [0, 90)");
+  o->depth_edge_m = f.Positive("depth_edge_m", o->depth_edge_m);
+  o->mixed_pixel_probability = Probability(f, "mixed_pixel_probability", o->mixed_pixel_probability);
+  o->short_probability = Probability(f, "short_probability", o->short_probability);
+  o->short_mean_m = f.Positive("short_mean_m", o->short_mean_m);
+  o->detection_range_m = f.NonNegative("detection_range_m", o->detection_range_m);
+  o->detection_edge_fraction = f.Positive("detection_edge_fraction", o->detection_edge_fraction);
+  if (o->detection_edge_fraction > 1.0) f.Child("detection_edge_fraction").Fail("must be in (0, 1]");
+}
+
 void ParseLaser(const YamlField& f, LaserOptions* o) {
-  f.RequireOnlyKeys({"num_beams", "angle_min_rad", "min_range_m", "max_range_m", "range_noise_stddev_m",
-                     "dropout_probability", "rate_hz", "mount_x_m", "mount_y_m", "mount_yaw_rad", "mount_height_m"});
+  f.RequireOnlyKeys({"num_beams", "angle_min_rad", "min_range_m", "max_range_m", "error_model", "range_noise_stddev_m",
+                     "dropout_probability", "fitted", "rate_hz", "mount_x_m", "mount_y_m", "mount_yaw_rad",
+                     "mount_height_m"});
   f.Get("num_beams", &o->num_beams);
   if (o->num_beams < 3 || o->num_beams > 100000) f.Child("num_beams").Fail("must be in 3..100000");
   f.Get("angle_min_rad", &o->angle_min_rad);
   o->min_range_m = f.NonNegative("min_range_m", o->min_range_m);
   o->max_range_m = f.Positive("max_range_m", o->max_range_m);
   if (o->min_range_m >= o->max_range_m) f.Fail("min_range_m must be < max_range_m");
+  f.Get("error_model", &o->error_model);
+  if (o->error_model != "gaussian" && o->error_model != "fitted") {
+    f.Child("error_model").Fail("must be 'gaussian' or 'fitted', got '" + o->error_model + "'");
+  }
+  // A parameter of the model not in use would be ignored silently: refuse it.
+  const bool fitted = o->error_model == "fitted";
+  for (const char* key : {"range_noise_stddev_m", "dropout_probability"}) {
+    if (fitted && f.Has(key)) f.Child(key).Fail("is a parameter of error_model 'gaussian'; set fitted.* instead");
+  }
+  if (!fitted && f.Has("fitted")) f.Child("fitted").Fail("is only used with error_model: fitted");
   o->range_noise_stddev_m = f.NonNegative("range_noise_stddev_m", o->range_noise_stddev_m);
   o->dropout_probability = f.NonNegative("dropout_probability", o->dropout_probability);
   if (o->dropout_probability > 1.0) f.Child("dropout_probability").Fail("must be in [0, 1]");
+  if (f.Has("fitted")) ParseFittedLaserErrors(f.Child("fitted"), &o->fitted);
   o->rate_hz = f.Positive("rate_hz", o->rate_hz);
   f.Get("mount_x_m", &o->mount_x_m);
   f.Get("mount_y_m", &o->mount_y_m);

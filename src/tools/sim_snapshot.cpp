@@ -22,6 +22,7 @@
 #include "output_guard.h"
 #include "doorplate_localization/sim/camera_renderer.h"
 #include "doorplate_localization/sim/laser_simulator.h"
+#include "doorplate_localization/sim/people.h"
 #include "doorplate_localization/sim/top_down_view.h"
 #include "doorplate_localization/sim/world_loader.h"
 
@@ -32,8 +33,9 @@ namespace {
 const char kUsage[] =
     "usage: doorplate_sim_snapshot --world FILE --camera OUT.png [--topdown OUT2.png]\n"
     "         [--x X_M --y Y_M (--theta RAD | --theta-deg DEG)] [--seed S]\n"
-    "         [--speed MPS] [--yaw-rate RPS] [--clean] [--benchmark N]\n"
+    "         [--speed MPS] [--yaw-rate RPS] [--time S] [--clean] [--benchmark N]\n"
     "  The pose (base_link in the world frame) defaults to the world's robot start.\n"
+    "  --time places the world's people where they are S simulated seconds in (default 0).\n"
     "  --seed seeds the camera noise and the laser scan (default 1); --speed and --yaw-rate set the\n"
     "  motion blur; --clean renders without blur, noise or lighting changes; --benchmark N renders N\n"
     "  frames and prints the time per frame.\n";
@@ -42,7 +44,7 @@ struct Args {
   std::string world, camera_out, topdown_out;
   std::optional<double> x, y, theta;
   std::uint64_t seed = 1;
-  double speed_mps = 0.0, yaw_rate_rps = 0.0;
+  double speed_mps = 0.0, yaw_rate_rps = 0.0, time_s = 0.0;
   bool clean = false;
   int benchmark_frames = 0;
 };
@@ -70,6 +72,10 @@ Args ParseArgs(int argc, char** argv) {
     else if (option == "--theta-deg") args.theta = ParseNumber(option, value) * M_PI / 180.0;
     else if (option == "--speed") args.speed_mps = ParseNumber(option, value);
     else if (option == "--yaw-rate") args.yaw_rate_rps = ParseNumber(option, value);
+    else if (option == "--time") {
+      args.time_s = ParseNumber(option, value);
+      if (!(args.time_s >= 0.0)) throw UsageError("--time must be >= 0");
+    }
     else if (option == "--seed") args.seed = static_cast<std::uint64_t>(
         tools::ParseWholeNumber(option, value, 0, 1e19));
     else if (option == "--benchmark") args.benchmark_frames = static_cast<int>(
@@ -124,7 +130,8 @@ void Benchmark(const dl::CameraRenderer& camera, const dl::Pose2D& pose, const A
 int Run(const Args& args) {
   tools::RefuseOverwritingInputs({{"--world", args.world}},
                                  {{"--camera", args.camera_out}, {"--topdown", args.topdown_out}});
-  const dl::World world = dl::LoadWorldFile(args.world);
+  dl::World world = dl::LoadWorldFile(args.world);
+  dl::PlacePeople(world, args.time_s);
   const dl::Pose2D pose = args.x ? dl::Pose2D{*args.x, *args.y, *args.theta} : world.start_pose;
   const dl::CameraRenderer camera(world, world.sensors.camera);
   std::mt19937_64 rng(args.seed);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstddef>
 #include <stdexcept>
 
 #include "../sim/test_worlds.h"
@@ -39,6 +40,17 @@ TEST(ContourSteering, BesideAStraightWallAtTheRightDistanceDrivesStraightAtCruis
   EXPECT_NEAR(r.target_bearing_rad, 0.0, 3 * kDeg);
   EXPECT_NEAR(r.command.angular_rps, 0.0, 0.03);
   EXPECT_GT(r.command.linear_mps, 0.35);
+}
+
+TEST(ContourSteering, ASpuriousReturnInItsLaneDoesNotMakeItTurn) {
+  const World world = test::RectangleCorridor(12, 2);
+  SimulatedScan scan = LaserSimulator(LaserOptions{}).CastExact(world, {4, 0.6, 0});
+  const std::size_t ahead = static_cast<std::size_t>(std::lround(-scan.angle_min_rad / scan.angle_increment_rad));
+  scan.ranges_m[ahead] = 0.5f;
+  const ContourSteeringResult r = ContourSteering(ContourSteeringOptions{}).Step(scan.ranges_m, scan.angle_min_rad,
+                                                                                  scan.angle_increment_rad);
+  EXPECT_NEAR(r.target_bearing_rad, 0.0, 3 * kDeg);
+  EXPECT_GT(r.command.linear_mps, 0.3);
 }
 
 TEST(ContourSteering, TurnsTowardsTheWallWhenTooFarAndAwayWhenTooClose) {

@@ -27,7 +27,7 @@ struct Scan {
 Scan EmptyScan() { return Scan{}; }
 Scan ScanWithReturnAhead(float ahead_m) {
   Scan scan;
-  scan.ranges[180] = ahead_m;  // angle 0
+  for (int i = 176; i <= 184; ++i) scan.ranges[i] = ahead_m;  // an object ahead (angle 0), several beams wide
   return scan;
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstddef>
 #include <random>
 #include <stdexcept>
 
@@ -41,9 +42,14 @@ TEST(WallFollower, ObservesDistanceAngleAndCorridorWidth) {
   EXPECT_NEAR(obs.wall_angle_rad, -0.1, 0.01);  // the wall runs 0.1 rad to the robot's right
   EXPECT_NEAR(obs.width_m, 1.85, 0.02);
   // Heading 0.1 rad towards the north wall (1.35 m left): the robot's 0.6 m wide path meets it after
-  // (1.35 ∓ 0.3) / sin(0.1) m, before the end wall 15 m ahead.
-  EXPECT_GT(obs.front_distance_m, (1.35 - 0.3) / std::sin(0.1) - 0.1);
-  EXPECT_LT(obs.front_distance_m, 1.35 / std::sin(0.1));
+  // (1.35 ∓ 0.3) / sin(0.1) m, 10.5-13.5 m ahead, seen so obliquely that its beams are 2 m apart in range:
+  // isolated returns, ignored; the end wall 15 m ahead is what the robot sees ahead.
+  EXPECT_NEAR(obs.front_distance_m, 15.0, 0.1);
+  // Heading 0.3 rad: the wall is met 3.5-4.4 m ahead and seen well enough.
+  const SimulatedScan steep = LaserSimulator(LaserOptions{}).CastExact(world, {5.0, 0.5, 0.3});
+  const CorridorObservation towards = follower.Observe(steep.ranges_m, steep.angle_min_rad, steep.angle_increment_rad);
+  EXPECT_GT(towards.front_distance_m, (1.35 - 0.3) / std::sin(0.3) - 0.1);
+  EXPECT_LT(towards.front_distance_m, 1.35 / std::sin(0.3));
 }
 
 TEST(WallFollower, ConvergesToTheWallDistanceAndStopsAtTheCorridorEnd) {
@@ -82,6 +88,20 @@ TEST(WallFollower, IgnoresNonFiniteRangesAndReportsNoWall) {
   const VelocityCommand cmd = follower.Command(obs, &state);
   EXPECT_EQ(state, WallFollowState::kNoWall);
   EXPECT_DOUBLE_EQ(cmd.angular_rps, 0.0);
+}
+
+TEST(WallFollower, ASpuriousReturnStraightAheadIsNotTheCorridorsEnd) {
+  const World world = test::RectangleCorridor(20.0, 1.85);
+  const WallFollower follower(WallFollowerOptions{});
+  SimulatedScan scan = LaserSimulator(LaserOptions{}).CastExact(world, {5.0, 0.6, 0.0});
+  const std::size_t ahead = static_cast<std::size_t>(std::lround(-scan.angle_min_rad / scan.angle_increment_rad));
+  scan.ranges_m[ahead] = 0.5f;  // one beam: dust, a reflection
+  CorridorObservation obs = follower.Observe(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad);
+  EXPECT_GT(obs.front_distance_m, 10.0);
+  scan.ranges_m[ahead + 1] = 0.52f;  // three neighbouring beams at one range: an object
+  scan.ranges_m[ahead + 2] = 0.53f;
+  obs = follower.Observe(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad);
+  EXPECT_NEAR(obs.front_distance_m, 0.5, 0.01);
 }
 
 TEST(WallFollower, InvalidOptionsNameTheField) {

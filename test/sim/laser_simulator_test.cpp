@@ -95,5 +95,44 @@ TEST(LaserSimulator, LintelsAboveTheScanPlaneAreNotSeen) {
   EXPECT_NEAR(scan.ranges_m[BeamAt(scan, M_PI / 2)], 1.0 + 3.0, 1e-4);  // through the door to the room's back
 }
 
+TEST(LaserSimulator, CastExactGivesEachBeamsIncidenceAngle) {
+  const World world = test::RectangleCorridor(10.0, 2.0);
+  const LaserSimulator laser(LaserOptions{});
+  std::vector<float> incidence;
+  const SimulatedScan scan = laser.CastExact(world, {3.0, 1.0, 0.0}, &incidence);
+  ASSERT_EQ(incidence.size(), scan.ranges_m.size());
+  EXPECT_NEAR(incidence[BeamAt(scan, M_PI / 2)], 0.0, 1e-4);        // straight at the north wall
+  EXPECT_NEAR(incidence[BeamAt(scan, M_PI / 4)], M_PI / 4, 1e-4);   // 45° to it
+  EXPECT_NEAR(incidence[BeamAt(scan, 80 * M_PI / 180)], 10 * M_PI / 180, 1e-4);
+  LaserOptions short_range;
+  short_range.max_range_m = 2.0;
+  LaserSimulator(short_range).CastExact(world, {3.0, 1.0, 0.0}, &incidence);
+  EXPECT_TRUE(std::isnan(incidence[BeamAt(scan, 0.0)]));            // the east wall is 7 m away
+}
+
+TEST(LaserSimulator, TheFittedModelIsSelectedByName) {
+  const World world = test::RectangleCorridor(10.0, 2.0);
+  LaserOptions options;
+  options.error_model = "fitted";
+  options.fitted.short_probability = 1.0;  // something just beyond the minimum range on every beam
+  options.fitted.short_mean_m = 0.02;
+  options.fitted.dropout_probability = options.fitted.dropout_near_probability = 0.0;
+  options.fitted.dropout_grazing_probability = 0.0;
+  const LaserSimulator laser(options);
+  std::mt19937_64 rng(1);
+  const Pose2D pose{5.0, 1.0, 0.0};
+  const SimulatedScan exact = laser.CastExact(world, pose);
+  const SimulatedScan scan = laser.Simulate(world, pose, rng);
+  for (size_t i = 0; i < scan.ranges_m.size(); ++i) {
+    EXPECT_GE(scan.ranges_m[i], options.min_range_m) << i;
+    EXPECT_LT(scan.ranges_m[i], exact.ranges_m[i]) << i;
+  }
+}
+
+TEST(LaserSimulator, DefaultOptionsKeepTheGaussianModel) {
+  EXPECT_EQ(LaserOptions{}.error_model, "gaussian");
+  EXPECT_FALSE(LaserSimulator(LaserOptions{}).error_model().NeedsIncidence());
+}
+
 }  // namespace
 }  // namespace doorplate_localization

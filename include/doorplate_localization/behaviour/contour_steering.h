@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "doorplate_localization/behaviour/isolated_returns.h"
 #include "doorplate_localization/behaviour/wall_follower.h"
 
 namespace doorplate_localization {
@@ -42,6 +43,7 @@ struct ContourSteeringOptions {
   double max_angular_speed_rps = 0.8;
   double rotate_in_place_deg = 60.0;   // targets beyond this, away from the wall: turn on the spot
   double min_speed_fraction = 0.25;    // speed factor at the sharpest driven turn (|θ| = rotate_in_place_deg)
+  IsolatedReturnOptions isolated_returns;  // returns without neighbours are no obstacle (isolated_returns.h)
 };
 
 // One step's decision, for logging and tests.

@@ -20,6 +20,7 @@
 
 #include <vector>
 
+#include "doorplate_localization/behaviour/isolated_returns.h"
 #include "doorplate_localization/behaviour/wall_follower.h"
 #include "doorplate_localization/common/geometry2d.h"
 
@@ -40,6 +41,7 @@ struct PathFollowerOptions {
   double face_tolerance_rad = 0.05;
   double stop_distance_m = 0.35;         // an obstacle this close ahead of base_link stops the robot ...
   double front_half_width_m = 0.25;      // ... if within this of the centre line
+  IsolatedReturnOptions isolated_returns;  // returns without neighbours are no obstacle (isolated_returns.h)
   double progress_window_m = 2.0;        // the closest path point is searched this far ahead of the last
 };
 

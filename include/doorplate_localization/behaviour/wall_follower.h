@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "doorplate_localization/behaviour/isolated_returns.h"
+
 namespace doorplate_localization {
 
 struct WallFollowerOptions {
@@ -24,6 +26,7 @@ struct WallFollowerOptions {
   double side_max_range_m = 3.0;        // farther points are not the wall (open doors, side corridors)
   double front_half_width_m = 0.3;      // returns ahead within this lateral band count as "the wall ahead"
   double width_sector_half_angle_deg = 30.0;  // corridor width from minima within ±this of straight left/right
+  IsolatedReturnOptions isolated_returns;  // returns without neighbours are no obstacle (isolated_returns.h)
 };
 
 // What the robot sees of its corridor, from one scan.

@@ -1,5 +1,6 @@
 // Renders what the sideways pinhole camera sees: walls, doors, open rooms, doorplates and distractor
-// text with perspective, lens and motion blur, lighting changes and pixel noise.
+// text, clutter, people and translucent glass, with perspective, lens and motion blur, lighting changes
+// and pixel noise.
 // Frames: camera optical frame (z forward, x right, y down) mounted per CameraOptions on base_link.
 #pragma once
 
@@ -84,6 +85,7 @@ class CameraRenderer {
   std::vector<std::vector<int>> wall_signs_;  // signs per wall index
   std::vector<SignTexture> sign_textures_;    // per World::signs entry
   std::vector<std::int16_t> noise_table_;     // quantiles of N(0, pixel_noise_stddev), 1/16 levels
+  int max_hits_ = 12;                         // nearest surfaces kept per column (more in detailed worlds)
 };
 
 }  // namespace doorplate_localization

@@ -9,7 +9,8 @@
 
 namespace doorplate_localization {
 
-// Rasterizes the surfaces that span `laser_height_m` (z_min <= h <= z_max) as occupied cells: each surface
+// Rasterizes the static surfaces that span `laser_height_m` (z_min <= h <= z_max; clutter and glass
+// included, people left out) as occupied cells: each surface
 // is every cell it passes through (a 4-connected line), so a closed outline stays closed both for flood
 // fills and for rays stepping diagonally from cell to cell (Bresenham) on the grid. Cells
 // reachable from the robot start without crossing an occupied cell are free; everything else is unknown.

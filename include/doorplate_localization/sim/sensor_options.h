@@ -8,6 +8,47 @@
 
 namespace doorplate_localization {
 
+// The "fitted" laser error model (LaserErrorModel, sim/laser_error_model.h): what a real laser does beyond
+// Gaussian noise, measured on the CARMEN logs by doorplate_laser_fit (docs/results/laser-model.md, which
+// also says which values are scaled for the RPLIDAR A2). r: the exact range, metres; i: the incidence
+// angle between the beam and the surface normal. Events, per beam, in this order:
+//  1. at a depth edge (a neighbouring beam's exact range differs by more than depth_edge_m), a mixed
+//     pixel with mixed_pixel_probability: a range uniform between the near and the far surface;
+//  2. with short_probability, something (a person, clutter) stands min range + an exponential with mean
+//     short_mean_m away; if that is before the surface (or within max range on a beam that hits
+//     nothing) the beam returns there: a spurious short return;
+//  3. a dropout (no return, +inf) with probability dropout_probability + dropout_per_m * r +
+//     dropout_near_probability * [r < dropout_near_range_m] +
+//     dropout_grazing_probability * max(0, (i - dropout_grazing_from_deg) / (90° - dropout_grazing_from_deg));
+//     and, with detection_range_m > 0, a dropout whenever the echo is too weak (the lidar equation: the
+//     returned power falls as cos(i) / r², so the farthest detected range is r_max = detection_range_m ·
+//     sqrt(cos i)): with probability clamp((r / r_max − 1) / detection_edge_fraction + 1/2, 0, 1), combined
+//     with the above as independent events;
+//  4. otherwise Gaussian noise with sigma sqrt(noise_base_m² + (noise_fraction * r)²) *
+//     (1 + noise_grazing_gain * (1 / cos(min(i, 80°)) - 1)).
+// The defaults are doorplate_laser_fit's fit to the four CARMEN logs (SICK LMS; 2026-12-02, seed 1), rounded,
+// with noise_fraction raised to the RPLIDAR A2's datasheet figure (docs/results/laser-model.md).
+struct FittedLaserErrorOptions {
+  double noise_base_m = 0.022;
+  double noise_fraction = 0.005;             // fitted 0.0025 on the SICK; RPLIDAR: its datasheet's <1 % as 2 sigma
+  double noise_grazing_gain = 0.77;
+  double dropout_probability = 0.0059;
+  double dropout_per_m = 0.0;
+  double dropout_near_probability = 0.040;
+  double dropout_near_range_m = 1.0;
+  double dropout_grazing_probability = 0.020;
+  double dropout_grazing_from_deg = 30.0;
+  double depth_edge_m = 0.3;
+  double mixed_pixel_probability = 0.115;
+  double short_probability = 0.090;
+  double short_mean_m = 5.96;
+  // Head-on detection range of the world's surfaces (0: no limit). The SICK LMS of the logs (80 m, time of
+  // flight) shows none within them; a triangulation scanner such as the RPLIDAR A2 does: 16 m on white
+  // targets by its datasheet, less on painted walls and much less at grazing incidence (docs/world-format.md).
+  double detection_range_m = 0.0;
+  double detection_edge_fraction = 0.2;
+};
+
 // 2D laser scanner in the base_link frame. Beams are spread evenly over [angle_min_rad,
 // angle_min_rad + (num_beams - 1) * 2*pi/num_beams] for a 360° device.
 struct LaserOptions {
@@ -15,8 +56,12 @@ struct LaserOptions {
   double angle_min_rad = -3.14159265358979323846;
   double min_range_m = 0.15;
   double max_range_m = 16.0;
-  double range_noise_stddev_m = 0.01;   // Gaussian noise on every return
-  double dropout_probability = 0.01;    // a beam returns no echo (+inf, REP-117) with this probability
+  // "gaussian": range_noise_stddev_m and dropout_probability below on every beam (the default; its random
+  // draws are those of every earlier version). "fitted": FittedLaserErrorOptions `fitted`.
+  std::string error_model = "gaussian";
+  double range_noise_stddev_m = 0.01;   // gaussian: noise on every return
+  double dropout_probability = 0.01;    // gaussian: a beam returns no echo (+inf, REP-117) with this probability
+  FittedLaserErrorOptions fitted;       // fitted: its parameters
   double rate_hz = 10.0;
   double mount_x_m = 0.0;               // laser frame origin in base_link
   double mount_y_m = 0.0;

@@ -29,8 +29,9 @@ class Simulator {
 
   // Sets the commanded velocity (base_link frame), clamped to the options' limits.
   void SetCommand(double linear_mps, double angular_rps);
-  // Advances the physics by one step. A step that would take the robot into a wall is not made and
-  // bumped() is true until a step moves it again.
+  // Advances the physics by one step. A step that would take the robot into a wall or clutter is not
+  // made and bumped() is true until a step moves it again. People (World::people) never block the robot:
+  // they are taken to step round it.
   void Step();
   // Moves the robot instantly (kidnapping); odometry does not see it.
   void Teleport(const Pose2D& pose);
@@ -48,16 +49,20 @@ class Simulator {
   bool bumped() const { return bumped_; }
   double distance_travelled_m() const { return distance_travelled_m_; }
 
+  // The sensors see the world's people where they are at time_s() (PlacePeople).
   SimulatedScan Scan();
   cv::Mat CameraImage();
 
+  // The world, with its people placed at the time of the last Scan/CameraImage (at 0 before any).
   const World& world() const { return world_; }
   const LaserSimulator& laser() const { return laser_; }
   const CameraRenderer& camera() const { return *camera_; }
 
  private:
-  // Distance from the robot centre to the nearest surface low enough to hit, metres.
+  // Distance from the robot centre to the nearest surface low enough to hit (people aside), metres.
   double Clearance(const Pose2D& pose) const;
+  // Moves the people's surfaces to time_s_ if they are elsewhere.
+  void UpdatePeople();
 
   World world_;
   const SimulatorOptions options_;
@@ -70,6 +75,7 @@ class Simulator {
   double linear_mps_ = 0.0, angular_rps_ = 0.0;
   bool bumped_ = false;
   double distance_travelled_m_ = 0.0;
+  double people_time_s_ = 0.0;  // time the people's surfaces in world_ show
 };
 
 }  // namespace doorplate_localization

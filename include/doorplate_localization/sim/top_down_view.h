@@ -15,7 +15,8 @@ namespace doorplate_localization {
 class TopDownView {
  public:
   // Sizes the picture to the world's surfaces plus `margin_m`, at most `max_side_px` pixels a side and
-  // between 5 and 80 px per metre; draws walls, doors and labelled signs.
+  // between 5 and 80 px per metre; draws walls, doors and labelled signs, and the detail: door frames
+  // (grey), clutter (orange), glass (light blue), people (purple), thick where the laser sees them.
   explicit TopDownView(const World& world, double margin_m = 1.0, int max_side_px = 4000);
 
   cv::Point ToPixel(Vec2 world_point) const;
