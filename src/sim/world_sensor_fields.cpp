@@ -67,9 +67,23 @@ void ParseLaser(const YamlField& f, LaserOptions* o) {
   o->mount_height_m = f.NonNegative("mount_height_m", o->mount_height_m);
 }
 
+void ParseOdometrySlip(const YamlField& f, OdometrySlipOptions* o) {
+  f.RequireOnlyKeys({"scale_stddev", "scale_correlation_length_m", "turn_scale_error_m_per_rad",
+                     "turn_rotation_error_rad_per_rad"});
+  o->scale_stddev = f.NonNegative("scale_stddev", o->scale_stddev);
+  if (o->scale_stddev >= 0.2) f.Child("scale_stddev").Fail("must be in [0, 0.2)");
+  o->scale_correlation_length_m = f.Positive("scale_correlation_length_m", o->scale_correlation_length_m);
+  f.Get("turn_scale_error_m_per_rad", &o->turn_scale_error_m_per_rad);
+  if (std::fabs(o->turn_scale_error_m_per_rad) >= 1.0) f.Child("turn_scale_error_m_per_rad").Fail("must be in (-1, 1)");
+  f.Get("turn_rotation_error_rad_per_rad", &o->turn_rotation_error_rad_per_rad);
+  if (std::fabs(o->turn_rotation_error_rad_per_rad) >= 0.5) {
+    f.Child("turn_rotation_error_rad_per_rad").Fail("must be in (-0.5, 0.5)");
+  }
+}
+
 void ParseOdometry(const YamlField& f, OdometryNoiseOptions* o) {
   f.RequireOnlyKeys({"alpha1_rad2_per_rad", "alpha2_rad2_per_m", "alpha3_m2_per_m", "alpha4_m2_per_rad",
-                     "scale_error", "heading_drift_rad_per_m", "rate_hz"});
+                     "scale_error", "heading_drift_rad_per_m", "rate_hz", "slip"});
   o->alpha1_rad2_per_rad = f.NonNegative("alpha1_rad2_per_rad", o->alpha1_rad2_per_rad);
   o->alpha2_rad2_per_m = f.NonNegative("alpha2_rad2_per_m", o->alpha2_rad2_per_m);
   o->alpha3_m2_per_m = f.NonNegative("alpha3_m2_per_m", o->alpha3_m2_per_m);
@@ -78,6 +92,7 @@ void ParseOdometry(const YamlField& f, OdometryNoiseOptions* o) {
   if (std::fabs(o->scale_error) >= 0.5) f.Child("scale_error").Fail("must be in (-0.5, 0.5)");
   f.Get("heading_drift_rad_per_m", &o->heading_drift_rad_per_m);
   o->rate_hz = f.Positive("rate_hz", o->rate_hz);
+  if (f.Has("slip")) ParseOdometrySlip(f.Child("slip"), &o->slip);
 }
 
 void ParseCamera(const YamlField& f, CameraOptions* o) {

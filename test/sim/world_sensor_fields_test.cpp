@@ -75,5 +75,40 @@ TEST(WorldSensorFields, BadLaserErrorFieldsAreNamed) {
             "instead");
 }
 
+// The odometry part: sensors.odometry.slip.
+OdometryNoiseOptions WithOdometry(const std::string& odometry) {
+  return ParseWorldYaml(std::string(kMinimal) + "sensors: {odometry: " + odometry + "}\n", "w.yaml").sensors.odometry;
+}
+
+TEST(WorldSensorFields, OdometrySlipIsOffUnlessTheWorldOptsIn) {
+  EXPECT_FALSE(ParseWorldYaml(kMinimal, "w.yaml").sensors.odometry.slip.Enabled());
+  const OdometrySlipOptions slip =
+      WithOdometry("{slip: {scale_stddev: 0.01, scale_correlation_length_m: 12, turn_scale_error_m_per_rad: 0.1, "
+                   "turn_rotation_error_rad_per_rad: 0.04}}")
+          .slip;
+  EXPECT_TRUE(slip.Enabled());
+  EXPECT_DOUBLE_EQ(slip.scale_stddev, 0.01);
+  EXPECT_DOUBLE_EQ(slip.scale_correlation_length_m, 12);
+  EXPECT_DOUBLE_EQ(slip.turn_scale_error_m_per_rad, 0.1);
+  EXPECT_DOUBLE_EQ(slip.turn_rotation_error_rad_per_rad, 0.04);
+}
+
+TEST(WorldSensorFields, BadOdometrySlipFieldsAreNamed) {
+  auto error_of = [](const std::string& odometry) -> std::string {
+    try {
+      WithOdometry(odometry);
+    } catch (const WorldFileError& e) {
+      return e.what();
+    }
+    return "(no error)";
+  };
+  EXPECT_NE(error_of("{slip: {scale_stddev: -0.1}}").find("scale_stddev"), std::string::npos);
+  EXPECT_NE(error_of("{slip: {scale_correlation_length_m: 0}}").find("scale_correlation_length_m"), std::string::npos);
+  EXPECT_NE(error_of("{slip: {turn_rotation_error_rad_per_rad: 0.7}}").find("turn_rotation_error_rad_per_rad"),
+            std::string::npos);
+  EXPECT_NE(error_of("{slip: {turn_scale_error_m_per_rad: 2}}").find("turn_scale_error_m_per_rad"), std::string::npos);
+  EXPECT_NE(error_of("{slip: {scale_sd: 0.1}}").find("scale_sd"), std::string::npos);  // unknown key
+}
+
 }  // namespace
 }  // namespace doorplate_localization

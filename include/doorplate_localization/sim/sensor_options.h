@@ -71,6 +71,24 @@ struct LaserOptions {
 
 // Differential-drive odometry error, independent of the simulation step: every random term is a random
 // walk whose variance grows linearly with the motion (AMCL's alpha roles, per unit of motion).
+// Odometry that slips (issue 20, item 3; fitted in docs/results/odometry-model.md). All zero = off: the
+// odometry then draws exactly the random numbers it drew before this existed.
+struct OdometrySlipOptions {
+  // A scale error that varies slowly along the path (floor surfaces, load): an Ornstein–Uhlenbeck process
+  // over the distance driven, stationary standard deviation `scale_stddev` (a fraction, like
+  // scale_error) and correlation length `scale_correlation_length_m`; added to scale_error.
+  double scale_stddev = 0.0;
+  double scale_correlation_length_m = 10.0;
+  // Slip on turns: extra scale error per rad/m of turn rate (a step's translation grows by
+  // turn_scale_error_m_per_rad × |rotation|), and rotation over-read by this fraction of the rotation.
+  double turn_scale_error_m_per_rad = 0.0;
+  double turn_rotation_error_rad_per_rad = 0.0;
+
+  bool Enabled() const {
+    return scale_stddev != 0.0 || turn_scale_error_m_per_rad != 0.0 || turn_rotation_error_rad_per_rad != 0.0;
+  }
+};
+
 struct OdometryNoiseOptions {
   double alpha1_rad2_per_rad = 0.001;   // rotation variance per radian turned
   double alpha2_rad2_per_m = 0.00002;   // rotation variance per metre driven
@@ -79,6 +97,7 @@ struct OdometryNoiseOptions {
   double scale_error = 0.02;            // systematic: odometry distance = (1 + scale_error) * true
   double heading_drift_rad_per_m = 0.002;  // systematic yaw drift per metre driven (unequal wheels)
   double rate_hz = 50.0;
+  OdometrySlipOptions slip;             // off by default (last: positional initializers keep their meaning)
 };
 
 // Pinhole camera on the robot, looking sideways. Optical frame: z forward, x right, y down.
