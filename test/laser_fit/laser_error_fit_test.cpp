@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "doorplate_localization/sim/laser_error_model.h"
+#include "../sim/quiet_laser_errors.h"
 
 namespace doorplate_localization {
 namespace {
@@ -59,14 +60,7 @@ BeamTally TallyOf(const FittedLaserErrorOptions& truth, const BeamTallyOptions& 
   return tallier.tally();
 }
 
-// Every effect off, 1 cm of noise.
-FittedLaserErrorOptions Quiet() {
-  FittedLaserErrorOptions o;
-  o.noise_base_m = 0.01, o.noise_fraction = 0.0, o.noise_grazing_gain = 0.0;
-  o.dropout_probability = 0.0, o.dropout_per_m = 0.0, o.dropout_near_probability = 0.0;
-  o.dropout_grazing_probability = 0.0, o.mixed_pixel_probability = 0.0, o.short_probability = 0.0;
-  return o;
-}
+FittedLaserErrorOptions Quiet() { return test::QuietLaserErrors(); }
 
 TEST(FitLaserErrors, RecoversTheParametersOfSimulatedScans) {
   FittedLaserErrorOptions truth = Quiet();

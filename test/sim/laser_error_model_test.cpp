@@ -8,20 +8,14 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+#include "quiet_laser_errors.h"
 
 namespace doorplate_localization {
 namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-// Options with every effect off and 1 cm of noise: each test turns on what it looks at.
-FittedLaserErrorOptions Quiet() {
-  FittedLaserErrorOptions o;
-  o.noise_base_m = 0.01, o.noise_fraction = 0.0, o.noise_grazing_gain = 0.0;
-  o.dropout_probability = 0.0, o.dropout_per_m = 0.0, o.dropout_near_probability = 0.0;
-  o.dropout_grazing_probability = 0.0, o.mixed_pixel_probability = 0.0, o.short_probability = 0.0;
-  return o;
-}
+FittedLaserErrorOptions Quiet() { return test::QuietLaserErrors(); }
 
 std::string ErrorOf(const std::function<void()>& f) {
   try {
