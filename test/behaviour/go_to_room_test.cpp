@@ -147,7 +147,7 @@ PlateOffset DriveByEq15(const World& world) {
 
 TEST(GoToRoom, TheEq15FallbackDrivesTheAdjacentDistancesByOdometry) {
   World exact = PlateCorridor();
-  exact.sensors.odometry = OdometryNoiseOptions{0, 0, 0, 0, 0, 0, 50.0};
+  exact.sensors.odometry = OdometryNoiseOptions{0, 0, 0, 0, 0, 0, 50.0, {}};
   const PlateOffset offset = DriveByEq15(exact);
   EXPECT_NEAR(offset.along_m, 0.0, GoToRoomOptions{}.arrive_tolerance_m + 0.01);
   EXPECT_NEAR(offset.from_wall_m, 0.6, 0.05);  // crossed over to the plates' wall
