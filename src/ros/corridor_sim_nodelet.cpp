@@ -9,6 +9,7 @@
 // lift's stop on its floor leaves the lift at its stop on that floor, facing away from the door
 // (Simulator::ChangeWorld; odometry does not see the ride); else a warning says why and nothing moves.
 // Publishes ~floor (std_msgs/String, latched: the floor the robot is truly on; with ~world, the world's name).
+// With ~wait_for_recorder_s it holds sim time at 0 until a recorder subscribes base_pose_ground_truth.
 // Parameters: corridor_sim_options.h.
 #include <atomic>
 #include <cmath>
@@ -223,8 +224,31 @@ class CorridorSimNodelet : public nodelet::Nodelet {
     }
   }
 
+  // Before the first step (with ~wait_for_recorder_s > 0): waits, in wall time, until base_pose_ground_truth
+  // has a subscriber — the recorder of a run — so the recording starts at sim time 0, not wherever a slow
+  // recorder happened to connect (a bag that misses the start measures from the wrong moment).
+  void WaitForRecorder() {
+    if (options_.wait_for_recorder_s <= 0.0) return;
+    const std::string topic = truth_pub_.getTopic();
+    NODELET_INFO("corridor sim: waiting up to %.1f s for a subscriber of %s (~wait_for_recorder_s)",
+                 options_.wait_for_recorder_s, topic.c_str());
+    const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(options_.wait_for_recorder_s);
+    while (!stop_ && ros::ok() && truth_pub_.getNumSubscribers() == 0) {
+      if (ros::WallTime::now() > deadline) {
+        NODELET_WARN("corridor sim: no subscriber of %s after %.1f s (~wait_for_recorder_s): starting anyway; "
+                     "a recording will miss the start", topic.c_str(), options_.wait_for_recorder_s);
+        return;
+      }
+      ros::WallDuration(0.01).sleep();
+    }
+    // A recorder subscribes to all its topics at once; give the other connections a moment to complete.
+    ros::WallDuration(kRecorderSettleS).sleep();
+    NODELET_INFO("corridor sim: %s has a subscriber; starting", topic.c_str());
+  }
+
   // Worker thread: step, publish, then wait until wall time catches up with sim time / real_time_factor.
   void Run() {
+    WaitForRecorder();
     const SensorOptions& sensors = options_.world.sensors;
     scan_gate_.emplace(sensors.laser.rate_hz);
     odom_gate_.emplace(sensors.odometry.rate_hz);
@@ -249,6 +273,7 @@ class CorridorSimNodelet : public nodelet::Nodelet {
   }
 
   static constexpr double kMaxLagS = 0.5;
+  static constexpr double kRecorderSettleS = 0.5;  // wall seconds after the recorder's first connection
   static constexpr double kLiftRideDistanceM = 1.5;  // a ride needs the robot this close to the lift's stop
 
   CorridorSimOptions options_;

@@ -75,6 +75,10 @@ const ParamTable<CorridorSimOptions>& CorridorSimParamTable() {
                         [](double v) { return std::isfinite(v) && v >= 0.0; })),
       Param<O>("publish_clock", DOORPLATE_PARAM_FIELD(publish_clock),
                "publish `/clock`; run the graph with `/use_sim_time` true"),
+      Param<O>("wait_for_recorder_s", DOORPLATE_PARAM_FIELD(wait_for_recorder_s),
+               "wall seconds to wait, before the first step, for a subscriber of `base_pose_ground_truth` (a "
+               "recorder such as `rosbag record`), so that a recording holds the run from sim time 0; 0 = start at once",
+               r::Holds("finite and >= 0", [](double v) { return std::isfinite(v) && v >= 0.0; })),
       Param<O>("physics_step_s", DOORPLATE_PARAM_FIELD(simulator.physics_step_s), "simulation step",
                r::Holds("in (0, 0.1] seconds", [](double v) { return v > 0.0 && v <= 0.1; })),
       Param<O>("max_linear_speed_mps", DOORPLATE_PARAM_FIELD(simulator.max_linear_speed_mps),

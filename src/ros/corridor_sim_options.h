@@ -33,6 +33,9 @@ struct CorridorSimOptions {
   SimulatorOptions simulator;       // ~seed, ~physics_step_s, ~max_linear_speed_mps, ~max_angular_speed_rps
   double real_time_factor = 1.0;    // sim seconds per wall second; 0 = as fast as possible
   bool publish_clock = true;        // publish /clock (run the graph with /use_sim_time true)
+  // Wall seconds to wait before the first step for a subscriber of base_pose_ground_truth (a recorder such as
+  // rosbag record), so that a recording holds the run from sim time 0; 0 = start at once.
+  double wait_for_recorder_s = 0.0;
   double cmd_vel_timeout_s = 0.5;   // sim seconds without cmd_vel after which the robot stops
   // Publish map -> odom computed from the true pose ("perfect localization"); off when a localizer runs.
   bool publish_ground_truth_tf = false;
