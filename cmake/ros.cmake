@@ -59,6 +59,8 @@ if(CATKIN_ENABLE_TESTING)
                     test/ros/corridor_sim_nodelet_rostest.cpp)
   target_include_directories(corridor_sim_nodelet_rostest PRIVATE src/ros ${catkin_INCLUDE_DIRS})
   target_link_libraries(corridor_sim_nodelet_rostest doorplate_nodelets doorplate_sim ${catkin_LIBRARIES})
+  # The same checker, its CorridorSimRecorder tests only, on a sim that waits for a recorder.
+  add_rostest(test/ros/corridor_sim_waits_for_recorder.test DEPENDENCIES corridor_sim_nodelet_rostest)
 
   # Sim + wall follower + text extractor in one manager: a north-wall plate is read at its crossing.
   # The checker also tests LoadTextExtractorOptions and the lazy camera subscription.

@@ -12,6 +12,7 @@
 #include <geometry_msgs/Twist.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
+#include <rosgraph_msgs/Clock.h>
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <sensor_msgs/Image.h>
@@ -234,6 +235,25 @@ TEST(LoadCorridorSimOptions, ReadsValuesOverDefaults) {
   EXPECT_EQ("odom", options.odom_frame_id);
   EXPECT_TRUE(options.publish_clock);
   EXPECT_FALSE(options.world.walls.empty());
+}
+
+// Only in corridor_sim_waits_for_recorder.test (~wait_for_recorder_s set, a recorder's view): sim time stays at
+// 0 while base_pose_ground_truth has no subscriber, even with the sensors subscribed (a localizer); once it has
+// one, the first ground truth is from the start, so a recording holds the whole run.
+TEST(CorridorSimRecorder, HoldsSimTimeUntilGroundTruthIsSubscribed) {
+  ros::NodeHandle nh;
+  int clocks = 0, scans = 0;
+  ros::Subscriber clock_sub = nh.subscribe<rosgraph_msgs::Clock>(
+      "/clock", 10, [&](const rosgraph_msgs::Clock::ConstPtr&) { ++clocks; });
+  ros::Subscriber scan_sub = nh.subscribe<sensor_msgs::LaserScan>(
+      "scan", 10, [&](const sensor_msgs::LaserScan::ConstPtr&) { ++scans; });
+  // A negative check needs a span of time: 2 wall s in which an unheld simulator would publish hundreds of clocks.
+  EXPECT_FALSE(WaitFor([&] { return clocks > 0 || scans > 0; }, 2.0));
+  nav_msgs::Odometry::ConstPtr first;
+  ros::Subscriber truth_sub = nh.subscribe<nav_msgs::Odometry>(
+      "base_pose_ground_truth", 10, [&](const nav_msgs::Odometry::ConstPtr& m) { if (!first) first = m; });
+  ASSERT_TRUE(WaitFor([&] { return first != nullptr; }, kTimeoutS));
+  EXPECT_LT(first->header.stamp.toSec(), 0.1) << "the recording missed the start";
 }
 
 }  // namespace
