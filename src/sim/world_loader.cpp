@@ -1,9 +1,12 @@
 // World file reader: YAML (docs/world-format.md) → World, validating every field.
 #include "doorplate_localization/sim/world_loader.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <iomanip>
 #include <sstream>
 
 #include <opencv2/imgcodecs.hpp>
@@ -104,6 +107,42 @@ void ParseWall(const YamlField& f, World* world, Indexes* idx) {
   f.GetColor("color", &wall.color);
   idx->walls[wall.id] = static_cast<int>(world->walls.size());
   world->walls.push_back(wall);
+}
+
+// Walls may meet (at corners, T-junctions: an end on the other wall) but not cross or lie on one another: a
+// crossing or a duplicated wall is an authoring mistake the maps and the laser would silently carry. Fails on
+// the later wall's entry, naming both ids and where.
+void CheckWallsDoNotCross(const std::vector<YamlField>& items, const World& world) {
+  constexpr double kToleranceM = 1e-3;
+  for (size_t j = 1; j < world.walls.size(); ++j) {
+    const Segment& b = world.walls[j].segment;
+    const Vec2 db = b.b - b.a;
+    for (size_t i = 0; i < j; ++i) {
+      const Segment& a = world.walls[i].segment;
+      const Vec2 da = a.b - a.a;
+      const double la = Norm(da), lb = Norm(db), denom = Cross(da, db);
+      std::ostringstream why;
+      why << std::fixed << std::setprecision(3);
+      if (std::fabs(denom) > 1e-9 * la * lb) {
+        const double t = Cross(b.a - a.a, db) / denom, u = Cross(b.a - a.a, da) / denom;  // along a, along b
+        const double ta = kToleranceM / la, tb = kToleranceM / lb;
+        if (t > ta && t < 1.0 - ta && u > tb && u < 1.0 - tb) {
+          const Vec2 p = a.a + t * da;
+          why << "crosses wall '" << world.walls[i].id << "' at (" << p.x << ", " << p.y
+              << "); walls may meet at their ends, not cross";
+        }
+      } else if (std::fabs(Cross(b.a - a.a, da)) / la < kToleranceM) {  // on one line: do they overlap?
+        const Vec2 unit = (1.0 / la) * da;
+        const double s0 = Dot(b.a - a.a, unit), s1 = Dot(b.b - a.a, unit);
+        const double overlap = std::min(la, std::max(s0, s1)) - std::max(0.0, std::min(s0, s1));
+        if (overlap > kToleranceM) {
+          why << "lies on wall '" << world.walls[i].id << "' for " << overlap << " m; walls may meet at their ends, "
+              << "not overlap";
+        }
+      }
+      if (!why.str().empty()) items[j].Fail(why.str());
+    }
+  }
 }
 
 // Door fields shared by `doors` entries and `door_rows` entries.
@@ -299,7 +338,9 @@ World ParseWorldYaml(const std::string& yaml_text, const std::string& source_nam
     root.GetColor("floor_color", &world.floor_color);
     root.GetColor("ceiling_color", &world.ceiling_color);
     Indexes idx;
-    for (const YamlField& f : root.Child("walls").Items()) ParseWall(f, &world, &idx);
+    const std::vector<YamlField> wall_items = root.Child("walls").Items();
+    for (const YamlField& f : wall_items) ParseWall(f, &world, &idx);
+    CheckWallsDoNotCross(wall_items, world);
     if (root.Has("doors")) for (const YamlField& f : root.Child("doors").Items()) ParseDoor(f, &world, &idx);
     if (root.Has("door_rows")) for (const YamlField& f : root.Child("door_rows").Items()) ParseDoorRow(f, &world, &idx);
     if (root.Has("plates")) {

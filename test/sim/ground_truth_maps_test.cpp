@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <stdexcept>
 
@@ -62,6 +63,26 @@ TEST(RasterizeWorld, ClosedCorridorIsFreeInsideOccupiedOnTheWallsUnknownOutside)
   // The grid covers the walls plus the margin and no more.
   EXPECT_NEAR(grid.origin.x_m, -0.525, 1e-9);
   EXPECT_EQ(grid.width, 201 + 20);
+}
+
+// docs/world-format.md's "A minimal world" is what a new user copies first: it must load and make maps.
+TEST(RasterizeWorld, TheFormatDocsMinimalWorldLoadsAndIsClosed) {
+  std::ifstream in(std::string(DOORPLATE_SOURCE_DIR) + "/docs/world-format.md");
+  ASSERT_TRUE(in.good());
+  std::string line, yaml;
+  bool section = false, block = false;
+  while (std::getline(in, line)) {
+    if (line.rfind("## ", 0) == 0) section = line == "## A minimal world";
+    if (!section) continue;
+    if (line == "```yaml") { block = true; continue; }
+    if (block && line == "```") break;
+    if (block) yaml += line + "\n";
+  }
+  ASSERT_FALSE(yaml.empty()) << "no yaml block under '## A minimal world'";
+  const World world = ParseWorldYaml(yaml, "docs/world-format.md");
+  const OccupancyGrid grid = RasterizeWorld(world, 0.05, kLaserHeight);
+  EXPECT_EQ(CellAt(grid, {world.start_pose.x_m, world.start_pose.y_m}), OccupancyGrid::kFree);
+  EXPECT_EQ(GroundTruthTextMap(world).landmarks.size(), 1u);  // plate 214
 }
 
 TEST(RasterizeWorld, RoomsBehindOpenDoorsAreReachableThroughTheGap) {

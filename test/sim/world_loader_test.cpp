@@ -195,6 +195,24 @@ TEST(ParseWorldYaml, BrokenFilesNameTheFileAndTheField) {
             std::string::npos);
 }
 
+TEST(ParseWorldYaml, WallsMayMeetAtTheirEndsButNotCrossOrOverlap) {
+  const std::string north = "  - {id: north, from: [0, 2], to: [10, 2], corridor_side: right}\n";
+  const auto with = [&](const std::string& extra) { return Replace(kMinimal, north, north + extra); };
+  // A corner and a T-junction (an end on the other wall's middle) are fine.
+  EXPECT_NO_THROW(ParseWorldYaml(with("  - {id: end, from: [10, 0], to: [10, 2], corridor_side: left}\n"), "w.yaml"));
+  EXPECT_NO_THROW(ParseWorldYaml(with("  - {id: stub, from: [5, 2], to: [5, 4], corridor_side: left}\n"), "w.yaml"));
+  EXPECT_EQ(ErrorOf([&] {
+              ParseWorldYaml(with("  - {id: cross, from: [5, -1], to: [5, 0.5], corridor_side: left}\n"), "w.yaml");
+            }),
+            "w.yaml: walls[2]: crosses wall 'south' at (5.000, 0.000); walls may meet at their ends, not cross");
+  EXPECT_EQ(ErrorOf([&] {
+              ParseWorldYaml(with("  - {id: again, from: [8, 0], to: [12, 0], corridor_side: left}\n"), "w.yaml");
+            }),
+            "w.yaml: walls[2]: lies on wall 'south' for 2.000 m; walls may meet at their ends, not overlap");
+  // Collinear walls that only touch end to end are one wall in two pieces: fine.
+  EXPECT_NO_THROW(ParseWorldYaml(with("  - {id: more, from: [10, 0], to: [12, 0], corridor_side: left}\n"), "w.yaml"));
+}
+
 TEST(ParseWorldYaml, SensorOverridesAreValidated) {
   const std::string with_sensors = std::string(kMinimal) + "sensors: {laser: {num_beams: 720, max_range_m: 8}}\n";
   const World world = ParseWorldYaml(with_sensors, "w.yaml");
