@@ -43,10 +43,15 @@ CarmenScan ParseFlaser(const std::vector<std::string>& t, const std::string& whe
     throw CarmenLogError(where + "beam count: must be an integer in [2, 100000], got " + t[1]);
   }
   const int n = static_cast<int>(count);
-  if (static_cast<int>(t.size()) < n + 8) {
-    throw CarmenLogError(where + "FLASER with " + std::to_string(n) + " beams needs " +
-                         std::to_string(n + 8) + " fields (ranges and two poses), got " +
-                         std::to_string(t.size()));
+  // FLASER n r_1 .. r_n x y theta odom_x odom_y odom_theta [ipc_timestamp [ipc_hostname logger_timestamp]]:
+  // n + 8, n + 9 or n + 11 fields. Any other count means the ranges do not match n (a beam lost or added),
+  // which would otherwise shift every later field and be blamed on the wrong one.
+  const int fields = static_cast<int>(t.size());
+  if (fields != n + 8 && fields != n + 9 && fields != n + 11) {
+    throw CarmenLogError(where + "FLASER with " + std::to_string(n) + " beams needs " + std::to_string(n + 8) +
+                         " fields (ranges and two poses), " + std::to_string(n + 9) + " (and ipc_timestamp) or " +
+                         std::to_string(n + 11) + " (and ipc_hostname, logger_timestamp), got " +
+                         std::to_string(fields) + ": does the number of ranges match the beam count?");
   }
   CarmenScan out;
   RangeScan& scan = out.scan;

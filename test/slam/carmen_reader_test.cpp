@@ -88,6 +88,16 @@ TEST(ReadCarmenLog, MalformedLinesNameTheFileTheLineAndTheField) {
   EXPECT_NE(ErrorOf("FLASER 2 1 2 0 0 nan 0 0 0\n").find("laser pose theta"), std::string::npos);
 }
 
+// A full CARMEN line ends with ipc_timestamp ipc_hostname logger_timestamp: one beam lost must be blamed on
+// the beam count, not on the hostname read as a timestamp.
+TEST(ReadCarmenLog, ALineMissingOneBeamIsBlamedOnTheBeamCount) {
+  std::istringstream full("FLASER 3 1 2 3 0 0 0 0 0 0 12.5 pippo 12.6\n");
+  EXPECT_DOUBLE_EQ(ReadCarmenLog(full, "x.log").scans[0].timestamp_s, 12.5);
+  const std::string error = ErrorOf("FLASER 3 1 2 0 0 0 0 0 0 12.5 pippo 12.6\n");
+  EXPECT_NE(error.find("x.log:1: FLASER with 3 beams needs 11 fields"), std::string::npos) << error;
+  EXPECT_NE(error.find("got 13: does the number of ranges match the beam count?"), std::string::npos) << error;
+}
+
 TEST(ReadCarmenLogFile, AMissingFileIsAnErrorNamingIt) {
   try {
     ReadCarmenLogFile("/nonexistent/x.log");
