@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <map>
 #include <string>
 #include <vector>
@@ -26,6 +27,13 @@ double Percentile(std::vector<double> v, double q) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const char* usage = "usage: doorplate_amcl_latency --duration-s S --label TEXT [--transform-tolerance-s T]\n";
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
+      std::fputs(usage, stdout);
+      return 0;
+    }
+  }
   ros::init(argc, argv, "amcl_latency", ros::init_options::AnonymousName);
   double duration_s = 60.0, tolerance_s = 0.1;
   std::string label = "run";
@@ -35,7 +43,7 @@ int main(int argc, char** argv) {
     else if (key == "--transform-tolerance-s") tolerance_s = std::stod(argv[i + 1]);
     else if (key == "--label") label = argv[i + 1];
     else {
-      std::fprintf(stderr, "usage: doorplate_amcl_latency --duration-s S --label TEXT [--transform-tolerance-s T]\n");
+      std::fputs(usage, stderr);
       return 2;
     }
   }

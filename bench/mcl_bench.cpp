@@ -112,6 +112,10 @@ int main(int argc, char** argv) {
   std::string markdown;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h") {
+      std::cout << "usage: doorplate_mcl_bench [--iterations N] [--markdown OUT.md]\n";
+      return 0;
+    }
     if (arg == "--iterations" && i + 1 < argc) {
       iterations = std::stoi(argv[++i]);
     } else if (arg == "--markdown" && i + 1 < argc) {

@@ -74,6 +74,10 @@ int main(int argc, char** argv) {
       }
       return argv[++i];
     };
+    if (arg == "--help" || arg == "-h") {
+      std::cout << "usage: doorplate_sim_bench [--world FILE] [--seconds S] [--seed N] [--markdown OUT.md]\n";
+      return 0;
+    }
     if (arg == "--world") world_file = value();
     else if (arg == "--seconds") seconds = std::stod(value());
     else if (arg == "--seed") seed = std::stoull(value());

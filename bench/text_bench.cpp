@@ -127,6 +127,11 @@ int main(int argc, char** argv) {
   dl::TextRecognizerType recognizer = dl::TextRecognizerType::kTesseract;
   std::vector<std::string> paths;
   for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
+      std::printf("usage: doorplate_text_bench [--frames N] [--size WIDTHxHEIGHT] [--recognizer tesseract|ppocr] "
+                  "[IMAGE...]\n  times the text extractor on IMAGEs (default: N synthetic frames)\n");
+      return 0;
+    }
     if (std::strcmp(argv[i], "--frames") == 0 && i + 1 < argc) {
       num_frames = std::atoi(argv[++i]);
     } else if (std::strcmp(argv[i], "--size") == 0 && i + 1 < argc) {
