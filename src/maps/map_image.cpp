@@ -1,12 +1,15 @@
 #include "doorplate_localization/maps/map_image.h"
 
+#include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "doorplate_localization/common/limits.h"
 #include "doorplate_localization/maps/map_io.h"
 
 namespace doorplate_localization {
@@ -89,6 +92,40 @@ MapImage FromOpenCv(const cv::Mat& mat, const std::string& path) {
   return image;
 }
 
+std::uint32_t BigEndian32(const std::string& bytes, size_t at) {
+  std::uint32_t v = 0;
+  for (size_t i = 0; i < 4; ++i) v = (v << 8) | static_cast<unsigned char>(bytes[at + i]);
+  return v;
+}
+
+// The picture's size as its header states it (PNM: width and height tokens; PNG: the IHDR chunk), checked
+// against limits::kMaxMapCells before the file is read whole: a 20000 x 20000 map must not cost 400 MB
+// before it is refused. Headers it cannot read are left to the decoders, which report them. Rewinds `in`.
+void CheckImageSizeInHeader(std::ifstream& in, const std::string& path) {
+  std::string head(4096, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<size_t>(std::max<std::streamsize>(0, in.gcount())));
+  in.clear();
+  in.seekg(0);
+  long width = 0, height = 0;
+  if (head.size() >= 2 && head[0] == 'P' && std::isdigit(static_cast<unsigned char>(head[1]))) {
+    PgmTokens tokens(head, path);
+    tokens.set_pos(2);
+    try {
+      if (!tokens.Next("header: width", &width) || !tokens.Next("header: height", &height)) return;
+    } catch (const MapFileError&) {
+      return;  // ParsePgm names the problem with the whole file
+    }
+  } else if (head.size() >= 24 && head.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0 && head.compare(12, 4, "IHDR") == 0) {
+    width = static_cast<long>(BigEndian32(head, 16));
+    height = static_cast<long>(BigEndian32(head, 20));
+  } else {
+    return;
+  }
+  const std::string too_big = limits::CheckMapCells(width, height);
+  if (!too_big.empty()) throw MapFileError(path + ": header: size " + too_big);
+}
+
 }  // namespace
 
 MapImage ParsePgm(const std::string& bytes, const std::string& source) {
@@ -108,6 +145,8 @@ MapImage ParsePgm(const std::string& bytes, const std::string& source) {
     throw MapFileError(source + ": header: size " + std::to_string(width) + " x " + std::to_string(height) +
                        " must be 1.." + std::to_string(kMaxSideCells) + " a side");
   }
+  const std::string too_big = limits::CheckMapCells(width, height);
+  if (!too_big.empty()) throw MapFileError(source + ": header: size " + too_big);
   if (maxval < 1 || maxval > 255) {
     throw MapFileError(source + ": header: maxval " + std::to_string(maxval) +
                        ": only 8-bit PGM (maxval 1..255) is supported");
@@ -159,6 +198,7 @@ MapImage ParsePgm(const std::string& bytes, const std::string& source) {
 MapImage ReadMapImage(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw MapFileError(path + ": cannot open the map image");
+  CheckImageSizeInHeader(in, path);  // before the file (and its pixels) are read whole
   std::ostringstream buffer;
   buffer << in.rdbuf();
   const std::string bytes = buffer.str();

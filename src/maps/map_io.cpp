@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -14,6 +15,7 @@
 #include <sstream>
 #include <utility>
 
+#include "doorplate_localization/common/limits.h"
 #include "doorplate_localization/common/yaml_reader.h"
 #include "doorplate_localization/maps/map_image.h"
 #include "format_number.h"
@@ -122,7 +124,15 @@ MapMetadata ReadMetadata(const std::string& yaml_path) {
   const YamlField resolution = root.Child("resolution");
   meta.resolution_m = resolution.AsDouble();
   if (meta.resolution_m <= 0.0) resolution.Fail("must be > 0, got " + FormatNumber(meta.resolution_m));
-  const std::vector<double> origin = root.Child("origin").AsDoubles(3);
+  const std::string bad_resolution = limits::CheckMapResolution(meta.resolution_m);
+  if (!bad_resolution.empty()) resolution.Fail(bad_resolution);
+  const YamlField origin_field = root.Child("origin");
+  const std::vector<double> origin = origin_field.AsDoubles(3);
+  for (int i = 0; i < 2; ++i) {
+    const std::string bad = limits::CheckCoordinate(origin[static_cast<size_t>(i)]);
+    if (!bad.empty()) origin_field.Fail(std::string(i == 0 ? "x" : "y") + " " + bad);
+  }
+  if (!std::isfinite(origin[2])) origin_field.Fail("yaw must be finite");
   meta.origin = {origin[0], origin[1], origin[2]};
   meta.negate = ReadNegate(root.Child("negate"));
   meta.occupied_thresh = ReadProbability(root, "occupied_thresh");

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "doorplate_localization/common/limits.h"
+
 namespace doorplate_localization {
 
 OccupancyGrid::OccupancyGrid(int width_cells, int height_cells, double resolution, Pose2D origin_pose,
@@ -12,6 +14,11 @@ OccupancyGrid::OccupancyGrid(int width_cells, int height_cells, double resolutio
   if (width_cells < 0 || height_cells < 0) {
     throw std::invalid_argument("OccupancyGrid: negative size " + std::to_string(width_cells) + " x " +
                                 std::to_string(height_cells));
+  }
+  // Before allocating: a grid beyond limits::kMaxMapCells is refused, not attempted (issue 18).
+  if (width_cells > 0 && height_cells > 0) {
+    const std::string too_big = limits::CheckMapCells(width_cells, height_cells);
+    if (!too_big.empty()) throw std::invalid_argument("OccupancyGrid: size " + too_big);
   }
   if (!(resolution > 0.0) || !std::isfinite(resolution)) {
     throw std::invalid_argument("OccupancyGrid: resolution must be > 0, got " + std::to_string(resolution));

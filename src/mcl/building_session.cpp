@@ -85,8 +85,8 @@ void BuildingSession::Initialize(int floor, const Pose2D& mean, const Eigen::Mat
 }
 
 void BuildingSession::GlobalLocalization() {
+  Current().GlobalLocalization();  // first: if it threw, the belief would be left as it was
   belief_.Reset(sessions_.size() == 1 ? 0 : -1);
-  Current().GlobalLocalization();
 }
 
 void BuildingSession::Forget(double now_s) {

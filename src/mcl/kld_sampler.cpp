@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "doorplate_localization/common/limits.h"
+
 namespace doorplate_localization {
 
 KldSampler::KldSampler(const KldSamplerOptions& options) : options_(options) {
@@ -12,6 +14,10 @@ KldSampler::KldSampler(const KldSamplerOptions& options) : options_(options) {
   if (options.min_particles < 1) fail("min_particles: must be >= 1, got " + std::to_string(options.min_particles));
   if (options.max_particles < options.min_particles) {
     fail("max_particles: must be >= min_particles (" + std::to_string(options.min_particles) + "), got " +
+         std::to_string(options.max_particles));
+  }
+  if (options.max_particles > limits::kMaxParticles) {  // before reserving for them
+    fail("max_particles: must be <= " + std::to_string(limits::kMaxParticles) + " (limits::kMaxParticles), got " +
          std::to_string(options.max_particles));
   }
   if (!(options.kld_err > 0.0 && std::isfinite(options.kld_err))) {

@@ -3,6 +3,9 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
+
+#include "doorplate_localization/common/limits.h"
 
 namespace doorplate_localization {
 
@@ -13,16 +16,19 @@ LocalizationGrid::LocalizationGrid(const OccupancyGrid& grid, const Localization
     fail("OccupancyGrid.width/height: must be > 0, got " + std::to_string(grid.width) + " x " +
          std::to_string(grid.height));
   }
+  const std::string too_big = limits::CheckMapCells(grid.width, grid.height);
+  if (!too_big.empty()) fail("OccupancyGrid.width/height: " + too_big);
   if (grid.cells.size() != static_cast<size_t>(grid.width) * grid.height) {
     fail("OccupancyGrid.cells: " + std::to_string(grid.cells.size()) + " values for " +
          std::to_string(grid.width) + " x " + std::to_string(grid.height) + " cells");
   }
-  if (!std::isfinite(grid.resolution_m) || grid.resolution_m <= 0.0) {
-    fail("OccupancyGrid.resolution_m: must be > 0, got " + std::to_string(grid.resolution_m));
+  const std::string bad_resolution = limits::CheckMapResolution(grid.resolution_m);
+  if (!bad_resolution.empty()) fail("OccupancyGrid.resolution_m: " + bad_resolution);
+  for (const auto& [name, value] : {std::pair<const char*, double>{"x_m", grid.origin.x_m}, {"y_m", grid.origin.y_m}}) {
+    const std::string bad = limits::CheckCoordinate(value);
+    if (!bad.empty()) fail(std::string("OccupancyGrid.origin.") + name + ": " + bad);
   }
-  if (!std::isfinite(grid.origin.x_m) || !std::isfinite(grid.origin.y_m) || !std::isfinite(grid.origin.theta_rad)) {
-    fail("OccupancyGrid.origin: must be finite");
-  }
+  if (!std::isfinite(grid.origin.theta_rad)) fail("OccupancyGrid.origin.theta_rad: must be finite");
   if (options.free_max_value < 0 || options.occupied_min_value > 100 ||
       options.free_max_value >= options.occupied_min_value) {
     fail("free_max_value/occupied_min_value: need 0 <= free_max_value < occupied_min_value <= 100, got " +
@@ -76,6 +82,12 @@ Pose2D LocalizationGrid::SampleFreePose(std::mt19937_64& rng) const {
   const Vec2 c{index % width_ + unit(rng), index / width_ + unit(rng)};
   const Vec2 p = FromCellCoords(c);
   return {p.x, p.y, NormalizeAngle(M_PI * (2.0 * unit(rng) - 1.0))};
+}
+
+std::string NoFreeCellProblem(const LocalizationGrid& grid) {
+  if (!grid.free_cells().empty()) return "";
+  return "no free cell: all " + std::to_string(static_cast<long long>(grid.width()) * grid.height()) +
+         " cells are occupied or unknown";
 }
 
 }  // namespace doorplate_localization

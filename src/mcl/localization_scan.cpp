@@ -3,11 +3,17 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "doorplate_localization/common/limits.h"
+
 namespace doorplate_localization {
 
 std::string ValidateLocalizationScan(const LocalizationScan& scan) {
   const auto finite = [](double v) { return std::isfinite(v); };
   if (scan.ranges_m.empty()) return "LocalizationScan.ranges_m: empty";
+  if (scan.ranges_m.size() > limits::kMaxScanBeams) {
+    return "LocalizationScan.ranges_m: " + std::to_string(scan.ranges_m.size()) + " beams, more than the limit of " +
+           std::to_string(limits::kMaxScanBeams) + " (limits::kMaxScanBeams)";
+  }
   if (!finite(scan.angle_min_rad)) return "LocalizationScan.angle_min_rad: must be finite";
   if (!finite(scan.angle_increment_rad) || scan.angle_increment_rad == 0.0) {
     return "LocalizationScan.angle_increment_rad: must be finite and non-zero, got " +

@@ -2,11 +2,16 @@
 
 #include <cmath>
 
+#include "doorplate_localization/common/limits.h"
 #include "doorplate_localization/common/room_id.h"
 
 namespace doorplate_localization {
 
 std::string ValidatePlateReading(const PlateReading& reading) {
+  if (reading.text.size() > limits::kMaxPlateTextBytes) {  // before any work on it
+    return "PlateReading.text: " + std::to_string(reading.text.size()) + " bytes, more than the limit of " +
+           std::to_string(limits::kMaxPlateTextBytes) + " (limits::kMaxPlateTextBytes)";
+  }
   if (CanonicalPlateText(reading.text).empty()) return "PlateReading.text: empty";
   if (!(reading.confidence >= 0.0 && reading.confidence <= 1.0)) {
     return "PlateReading.confidence: must be in [0, 1], got " + std::to_string(reading.confidence);

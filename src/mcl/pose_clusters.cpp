@@ -47,6 +47,12 @@ PoseCluster ParticleStatistics(const std::vector<Particle>& particles, const std
   return c;
 }
 
+PoseCluster SetStatistics(const std::vector<Particle>& particles) {
+  std::vector<int> all(particles.size());
+  std::iota(all.begin(), all.end(), 0);
+  return ParticleStatistics(particles, all);
+}
+
 double PositionStddev(const PoseCluster& cluster) {
   // Largest eigenvalue of the symmetric 2 × 2 block, closed form.
   const double a = cluster.covariance(0, 0), b = cluster.covariance(0, 1), d = cluster.covariance(1, 1);

@@ -52,6 +52,8 @@ TextAmcl::TextAmcl(const TextAmclOptions& options, TextAmclModels models)
   if (!models_.motion) throw std::invalid_argument("TextAmcl: models.motion: must not be null");
   if (!models_.laser) throw std::invalid_argument("TextAmcl: models.laser: must not be null");
   if (!models_.resampler) throw std::invalid_argument("TextAmcl: models.resampler: must not be null");
+  const std::string no_free = NoFreeCellProblem(*models_.grid);
+  if (!no_free.empty()) throw std::invalid_argument("TextAmcl: models.grid: " + no_free);
   const auto& o = options_;
   Require(o.update_min_d_m >= 0.0, "update_min_d_m", "must be >= 0", o.update_min_d_m);
   Require(o.update_min_a_rad >= 0.0, "update_min_a_rad", "must be >= 0", o.update_min_a_rad);
@@ -159,7 +161,13 @@ PoseEstimate TextAmcl::Estimate() const {
   const ClusterResult& c = Clusters();
   if (c.clusters.empty()) throw std::logic_error("TextAmcl::Estimate: not initialized (no particles)");
   const PoseCluster& best = c.clusters.front();
-  return {best.mean, best.covariance, best.weight, static_cast<int>(c.clusters.size())};
+  PoseEstimate estimate;
+  estimate.pose = best.mean;
+  estimate.covariance = SetStatistics(particles_).covariance;  // amcl's amcl_pose covariance
+  estimate.cluster_covariance = best.covariance;
+  estimate.cluster_weight = best.weight;
+  estimate.cluster_count = static_cast<int>(c.clusters.size());
+  return estimate;
 }
 
 TextAmclStatus TextAmcl::Status() const {

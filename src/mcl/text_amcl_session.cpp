@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "doorplate_localization/common/limits.h"
 #include "doorplate_localization/common/room_id.h"
 
 namespace doorplate_localization {
@@ -183,7 +184,10 @@ SessionUpdate TextAmclSession::AddPlates(double stamp_s, const std::vector<Plate
     }
     if (matcher_->Compatible(*text_map_, reading.text, reading.confidence).empty()) {
       ++counters_.unknown_room_readings;
-      const bool first = unknown_rooms_.insert(CanonicalRoomId(reading.text)).second;  // one warning per room
+      // One warning per room; past limits::kMaxRememberedUnknownRooms rooms (OCR garbage over a long run)
+      // they are counted but no longer remembered, so the set cannot grow without bound.
+      const bool first = unknown_rooms_.size() < limits::kMaxRememberedUnknownRooms &&
+                         unknown_rooms_.insert(CanonicalRoomId(reading.text)).second;
       update.plates.push_back(
           {stamp_s, reading, first ? PlateDisposition::kUnknownRoomFirst : PlateDisposition::kUnknownRoom, {}, ""});
       continue;

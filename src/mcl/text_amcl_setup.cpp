@@ -26,6 +26,8 @@ const char* ToString(LaserModelType type) {
 std::unique_ptr<TextAmcl> MakeTextAmcl(const TextAmclSetupOptions& options, const OccupancyGrid& map,
                                        std::shared_ptr<const TextMap> text_map) {
   auto grid = std::make_shared<const LocalizationGrid>(map, options.grid);
+  const std::string no_free = NoFreeCellProblem(*grid);  // before the models are built on it
+  if (!no_free.empty()) throw std::invalid_argument("map: " + no_free);
   TextAmclModels models;
   models.grid = grid;
   models.motion = std::make_shared<DiffDriveMotionModel>(options.motion);

@@ -7,6 +7,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "doorplate_localization/common/limits.h"
 #include "doorplate_localization/ros/text_detection_conversions.h"
 
 namespace doorplate_localization {
@@ -33,7 +34,7 @@ std::vector<PlateReading> ToPlateReadings(const TextDetectionArray& msg, const C
         std::nullopt);
     const std::string problem = ValidatePlateReading(r);
     if (!problem.empty()) {
-      if (problems != nullptr) problems->push_back("detection '" + d.text + "': " + problem);
+      if (problems != nullptr) problems->push_back("detection '" + limits::TruncateForLog(d.text) + "': " + problem);
       continue;
     }
     readings.push_back(r);
@@ -102,19 +103,71 @@ std::string StateText(LocalizationState state, LostReason reason) {
   return std::string(ToString(state)) + ": " + ToString(reason);
 }
 
+std::string NodeStateText(const LocalizerHealth& h) {
+  if (!h.map_in_force) return "waiting_for_map";
+  if (!h.error.empty()) return "error: " + limits::TruncateForLog(h.error, 200);
+  if (h.scan_age_s < 0.0 || (h.scan_timeout_s > 0.0 && h.scan_age_s > h.scan_timeout_s)) return "waiting_for_scan";
+  return StateText(h.status.state, h.status.lost_reason);
+}
+
+diagnostic_msgs::DiagnosticStatus ToDiagnosticStatus(const LocalizerHealth& h, const std::string& name,
+                                                     const std::string& hardware_id) {
+  diagnostic_msgs::DiagnosticStatus d;
+  d.name = name;
+  d.hardware_id = hardware_id;
+  const std::string state = NodeStateText(h);
+  if (state.rfind("error", 0) == 0) {
+    d.level = diagnostic_msgs::DiagnosticStatus::ERROR;
+  } else if (state == "converged" || state == "tracking") {
+    d.level = diagnostic_msgs::DiagnosticStatus::OK;
+  } else {
+    d.level = diagnostic_msgs::DiagnosticStatus::WARN;  // waiting_for_map, waiting_for_scan, lost
+  }
+  d.message = state;
+  if (h.global_localization_queued) d.message += " (global_localization queued until a map is in force)";
+  const auto add = [&d](const std::string& key, const std::string& value) {
+    diagnostic_msgs::KeyValue kv;
+    kv.key = key;
+    kv.value = value;
+    d.values.push_back(kv);
+  };
+  const auto number = [](double v, int precision) {
+    std::ostringstream out;
+    out.setf(std::ios::fixed);
+    out.precision(precision);
+    out << v;
+    return out.str();
+  };
+  add("state", state);
+  add("map in force", h.map_in_force ? h.map : "none");
+  add("global localization queued", h.global_localization_queued ? "yes" : "no");
+  add("scan rate (Hz)", number(h.scan_rate_hz, 1));
+  add("last scan age (s)", h.scan_age_s < 0.0 ? "none since the (re)start" : number(h.scan_age_s, 2));
+  add("odometry tf age (s)", h.tf_age_s < 0.0 ? "no transform" : number(h.tf_age_s, 2));
+  add("particles", std::to_string(h.status.particle_count));
+  add("best cluster weight", number(h.status.best_cluster_weight, 3));
+  add("position stddev (m)", number(h.status.position_stddev_m, 3));
+  add("plates weighed", std::to_string(h.plates_weighed));
+  add("plates used", std::to_string(h.plates_used));
+  add("unknown room readings", std::to_string(h.unknown_room_readings));
+  add("last error", h.error.empty() ? "none" : limits::TruncateForLog(h.error, 200));
+  return d;
+}
+
 std::string DescribePlateOutcome(const PlateReadingOutcome& outcome) {
   const PlateReading& r = outcome.reading;
+  const std::string text = limits::TruncateForLog(r.text);
   std::ostringstream out;
   out.setf(std::ios::fixed);
   switch (outcome.disposition) {
     case PlateDisposition::kWeighed: {
       const PlateUpdateResult& u = outcome.result;
       if (!u.used) {
-        out << "plate '" << r.text << "' not used: " << u.ignored_reason;
+        out << "plate '" << text << "' not used: " << u.ignored_reason;
         break;
       }
       out.precision(3);
-      out << "plate '" << r.text << "' at " << r.bearing_rad << " rad, range ";
+      out << "plate '" << text << "' at " << r.bearing_rad << " rad, range ";
       if (r.range_m) out << std::setprecision(2) << *r.range_m << " m"; else out << "none";
       out << std::setprecision(2) << ": explained " << u.explained_ratio << " (best cluster "
           << u.best_cluster_explained_ratio << ")" << (u.contradicted_estimate ? ", CONTRADICTS the estimate" : "")
@@ -123,11 +176,11 @@ std::string DescribePlateOutcome(const PlateReadingOutcome& outcome) {
     }
     case PlateDisposition::kUnknownRoomFirst:
     case PlateDisposition::kUnknownRoom:
-      out << "room '" << r.text << "' is not in the text map";
+      out << "room '" << text << "' is not in the text map";
       break;
     default:
       out.precision(3);
-      out << "plate '" << r.text << "' at " << outcome.stamp_s << " s ignored (" << ToString(outcome.disposition)
+      out << "plate '" << text << "' at " << outcome.stamp_s << " s ignored (" << ToString(outcome.disposition)
           << ")" << (outcome.detail.empty() ? "" : ": ") << outcome.detail;
   }
   return out.str();

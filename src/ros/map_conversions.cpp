@@ -3,6 +3,9 @@
 #include <cmath>
 #include <cstdint>
 #include <sstream>
+#include <string>
+
+#include "doorplate_localization/common/limits.h"
 
 #include "doorplate_localization/ros/pose_conversions.h"
 
@@ -14,13 +17,21 @@ std::string FromOccupancyGridMsg(const nav_msgs::OccupancyGrid& msg, OccupancyGr
   const size_t expected = static_cast<size_t>(info.width) * info.height;
   if (!std::isfinite(info.resolution) || info.resolution <= 0.0f) {
     problem << "info.resolution must be finite and > 0, got " << info.resolution;
+  } else if (const std::string bad = limits::CheckMapResolution(info.resolution); !bad.empty()) {
+    problem << "info.resolution " << bad;
   } else if (info.width == 0 || info.height == 0) {
     problem << "info.width and info.height must be > 0, got " << info.width << " x " << info.height;
+  } else if (const std::string too_big = limits::CheckMapCells(info.width, info.height); !too_big.empty()) {
+    problem << "info.width x info.height: " << too_big;  // before the grid is allocated
   } else if (msg.data.size() != expected) {
     problem << "data has " << msg.data.size() << " cells, info says " << info.width << " x " << info.height
             << " = " << expected;
   } else if (!IsFinitePose(info.origin) || QuaternionNorm(info.origin.orientation) < 1e-6) {
     problem << "info.origin must be a finite pose with a non-zero quaternion";
+  } else if (const std::string bad_x = limits::CheckCoordinate(info.origin.position.x); !bad_x.empty()) {
+    problem << "info.origin.position.x " << bad_x;
+  } else if (const std::string bad_y = limits::CheckCoordinate(info.origin.position.y); !bad_y.empty()) {
+    problem << "info.origin.position.y " << bad_y;
   }
   if (!problem.str().empty()) return problem.str();
   OccupancyGrid out(static_cast<int>(info.width), static_cast<int>(info.height), info.resolution,

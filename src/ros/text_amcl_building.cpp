@@ -1,5 +1,7 @@
 #include "text_amcl_building.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 #include <utility>
 
@@ -97,6 +99,100 @@ std::unique_ptr<BuildingSession> StartBuildingSession(const BuildingSessionOptio
     *text_problem = e.what();
     return session;
   }
+}
+
+LocalizerCore::LocalizerCore(const TextAmclNodeOptions& options, std::shared_ptr<const TextMap> text_map)
+    : options_(options), text_map_(std::move(text_map)) {}
+
+LocalizerCore::MapChange LocalizerCore::UseMaps(std::shared_ptr<const BuildingMaps> maps, const std::string& source,
+                                                const std::optional<StartPose>& start) {
+  MapChange change;
+  BuildingSessionOptions o = ToBuildingSessionOptions(options_);
+  if (start) {
+    o.session.start_with_global_localization = false;
+    o.session.initial_pose = start->mean;
+    o.session.initial_covariance = start->covariance;
+  } else if (queued_global_localization_) {
+    o.session.start_with_global_localization = true;
+  }
+  std::unique_ptr<BuildingSession> session;
+  try {  // the whole new session first: nothing in force changes until it exists
+    session = StartBuildingSession(o, maps, &change.text_problem);
+  } catch (const std::exception& e) {  // invalid_argument from the checks; anything else (bad_alloc) too
+    change.problem = e.what();
+    change.text_problem.clear();
+    return change;
+  }
+  // Commit: nothing below throws.
+  session_ = std::move(session);
+  change.used = true;
+  change.ran_queued_global_localization = !start && queued_global_localization_;
+  queued_global_localization_ = false;
+  if (start) {
+    options_.session.initial_pose = start->mean;
+    options_.session.initial_covariance = start->covariance;
+  }
+  const OccupancyGrid& grid = session_->maps().floors[static_cast<size_t>(session_->floor())].grid;
+  char size[96];
+  std::snprintf(size, sizeof(size), ": %d x %d at %.3f m", grid.width, grid.height, grid.resolution_m);
+  map_ = source + size;
+  error_.clear();
+  Restarted();
+  return change;
+}
+
+LocalizerCore::MapChange LocalizerCore::UseGrid(const OccupancyGrid& grid, const std::string& source,
+                                                const std::optional<StartPose>& start) {
+  if (options_.building) {
+    MapChange refused;
+    refused.problem = "the floors' maps come from " + options_.building_file;
+    return refused;
+  }
+  return UseMaps(OneFloorBuilding(grid, text_map_, options_.start_floor), source, start);
+}
+
+bool LocalizerCore::GlobalLocalization() {
+  if (!session_) {
+    queued_global_localization_ = true;
+    return false;
+  }
+  session_->GlobalLocalization();  // cannot fail on a session the core accepted (it has free cells)
+  queued_global_localization_ = false;
+  Restarted();
+  return true;
+}
+
+void LocalizerCore::InitialPose(const StartPose& pose) {
+  if (session_) session_->Initialize(session_->floor(), pose.mean, pose.covariance);  // throws before changing
+  options_.session.initial_pose = pose.mean;
+  options_.session.initial_covariance = pose.covariance;
+  queued_global_localization_ = false;
+  if (session_) Restarted();
+}
+
+void LocalizerCore::ScanTaken(double now_s) {
+  last_scan_s_ = now_s;
+  error_.clear();
+}
+
+void LocalizerCore::Failed(const std::string& what) { error_ = what.empty() ? "unknown exception" : what; }
+
+LocalizerHealth LocalizerCore::Health(double now_s) const {
+  LocalizerHealth h;
+  h.map_in_force = session_ != nullptr;
+  h.map = map_;
+  h.global_localization_queued = queued_global_localization_;
+  h.error = error_;
+  h.scan_age_s = last_scan_s_ ? std::max(0.0, now_s - *last_scan_s_) : -1.0;
+  h.scan_timeout_s = options_.scan_timeout_s;
+  if (session_) {
+    h.status = session_->Status();
+    const TextAmclSessionCounters& c = session_->session().counters();
+    h.plates_weighed = c.plates_weighed;
+    h.plates_used = c.plates_used;
+    h.unknown_room_readings = c.unknown_room_readings;
+  }
+  return h;
 }
 
 }  // namespace doorplate_localization

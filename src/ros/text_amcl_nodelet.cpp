@@ -4,19 +4,33 @@
 // floor, which becomes certain), text_detections and, with ~use_map_topic, map; else it loads ~map_file
 // (latched on map) or calls static_map. With ~building_file the floors' maps come from it (text_amcl_building.h);
 // without, the map is a one-floor building. Publishes amcl_pose, particlecloud (at most ~gui_publish_rate),
-// ~state (waiting_for_map | tracking | converged | lost: <reason>; converged only on a floor the plates made
-// certain), ~floor (the current floor's id; a switch also latches that floor's grid on map when the nodelet
-// owns the map, and its plates on text_landmarks), text_landmarks, all latched, and tf global_frame -> odom_frame
-// stamped scan stamp + ~transform_tolerance. Services: global_localization (the floor becomes unknown too),
-// request_nomotion_update, set_map (refused with ~building_file). Odometry: tf odom_frame -> base_frame at each
-// scan's and detection array's stamp. Parameters: text_amcl_options.h. mutex_ guards the session.
+// ~state (below; converged only on a floor the plates made certain), ~floor (the current floor's id; a switch
+// also latches that floor's grid on map when the nodelet owns the map, and its plates on text_landmarks),
+// text_landmarks, all latched, and tf global_frame -> odom_frame stamped scan stamp + ~transform_tolerance. Services: global_localization (the floor becomes unknown too;
+// queued until a map is in force), request_nomotion_update, set_map (refused with ~building_file; always
+// starts at its initial_pose). Odometry: tf odom_frame -> base_frame at each scan's and detection array's
+// stamp. Parameters: text_amcl_options.h. mutex_ guards the core.
+//
+// Requests go through LocalizerCore (text_amcl_building.h): a refused map (set_map, the map topic,
+// static_map) leaves the session, the latched map and ~state as they were, and set_map answers success
+// false with the reason logged. ~state is LocalizerCore's (waiting_for_map | waiting_for_scan | tracking |
+// converged | lost: <reason> | error: <what>): converged only while scans are being taken and estimates
+// published. /diagnostics (diagnostic_msgs/DiagnosticArray, 1 Hz ROS time): state, map in force, scan rate,
+// odometry tf age, plates used, the last error (amcl_conversions.h's ToDiagnosticStatus). amcl_pose is
+// published after filter updates (scans, plates), not at a (re)start, as amcl; its covariance is the whole
+// particle set's (amcl's).
+// Over 400 lines: one callback per amcl interface (3 services, 4 subscriptions, 3 timers) and their logging;
+// the rules live in LocalizerCore and the message conversions, which have their own tests.
+#include <algorithm>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <nav_msgs/GetMap.h>
 #include <nav_msgs/SetMap.h>
 #include <nodelet/nodelet.h>
@@ -28,6 +42,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
+#include "doorplate_localization/common/limits.h"
 #include "doorplate_localization/mcl/building_session.h"
 #include "doorplate_localization/ros/amcl_conversions.h"
 #include "doorplate_localization/ros/map_conversions.h"
@@ -46,19 +61,21 @@ class TextAmclNodelet : public nodelet::Nodelet {
     ros::NodeHandle& nh = getNodeHandle();
     ros::NodeHandle& pnh = getPrivateNodeHandle();
     std::shared_ptr<const BuildingMaps> start_maps;
+    std::shared_ptr<const TextMap> text_map;  // one floor: ~text_map_file (null: laser only)
     try {
       options_ = LoadTextAmclOptions(pnh);  // loads ~building_file
       if (!options_.building) {             // one floor: ~text_map_file with the map the nodelet gets
         const LocalizerTextMap loaded = LoadLocalizerTextMap(options_, pnh.resolveName("text_map_file"));
-        text_map_ = loaded.text_map;
+        text_map = loaded.text_map;
         if (!loaded.problem.empty()) NODELET_ERROR("%s; localizing with the laser alone", loaded.problem.c_str());
         if (!loaded.warning.empty()) NODELET_WARN("text amcl: %s", loaded.warning.c_str());
       }
-      start_maps = LocalizerStartMaps(options_, text_map_, pnh.resolveName("map_file"));
+      start_maps = LocalizerStartMaps(options_, text_map, pnh.resolveName("map_file"));
     } catch (const std::exception& e) {
       NODELET_FATAL("%s", e.what());
       throw;
     }
+    core_ = std::make_unique<LocalizerCore>(options_, text_map);
     tf_broadcaster_ = std::make_unique<tf2_ros::TransformBroadcaster>();
     tf_listener_ = std::make_unique<tf2_ros::TransformListener>(tf_buffer_);
     pose_pub_ = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("amcl_pose", 2, /*latch=*/true);
@@ -66,8 +83,12 @@ class TextAmclNodelet : public nodelet::Nodelet {
     markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("text_landmarks", 1, /*latch=*/true);
     state_pub_ = pnh.advertise<std_msgs::String>("state", 1, /*latch=*/true);
     floor_pub_ = pnh.advertise<std_msgs::String>("floor", 1, /*latch=*/true);
-    PublishState("waiting_for_map");
-    if (text_map_) markers_pub_.publish(ToTextLandmarkMarkers(*text_map_, options_.global_frame_id, ros::Time::now()));
+    diagnostics_pub_ = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 1);
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      PublishState();
+    }
+    if (text_map) markers_pub_.publish(ToTextLandmarkMarkers(*text_map, options_.global_frame_id, ros::Time::now()));
     global_srv_ = nh.advertiseService("global_localization", &TextAmclNodelet::OnGlobalLocalization, this);
     nomotion_srv_ = nh.advertiseService("request_nomotion_update", &TextAmclNodelet::OnNoMotionUpdate, this);
     set_map_srv_ = nh.advertiseService("set_map", &TextAmclNodelet::OnSetMap, this);
@@ -76,7 +97,7 @@ class TextAmclNodelet : public nodelet::Nodelet {
       const std::string param = pnh.resolveName(options_.building ? "building_file" : "map_file");
       const std::string& file = options_.building ? options_.building_file : options_.map_file;
       std::lock_guard<std::mutex> lock(mutex_);
-      if (!UseMaps(start_maps, file)) {
+      if (!UseMaps([&] { return core_->UseMaps(start_maps, file); }, file)) {
         NODELET_FATAL("%s = '%s' cannot be used (see above)", param.c_str(), file.c_str());
         throw std::runtime_error("unusable " + param + " " + file);
       }
@@ -91,49 +112,53 @@ class TextAmclNodelet : public nodelet::Nodelet {
     if (options_.save_pose_rate_hz > 0.0) {
       save_timer_ = nh.createTimer(ros::Duration(1.0 / options_.save_pose_rate_hz), &TextAmclNodelet::SavePose, this);
     }
+    health_timer_ = nh.createTimer(ros::Duration(1.0), &TextAmclNodelet::OnHealthTimer, this);
   }
 
-  // A session on new maps (the building's, or a map the nodelet got with text_map_) at ~initial_pose_* or over
-  // the free space; the running session stays if the maps cannot be used. Requires mutex_.
-  bool UseMaps(const std::shared_ptr<const BuildingMaps>& maps, const std::string& source) {
-    std::unique_ptr<BuildingSession> session;
-    std::string text_problem;
-    try {
-      session = StartBuildingSession(ToBuildingSessionOptions(options_), maps, &text_problem);
-    } catch (const std::invalid_argument& e) {
-      NODELET_ERROR("text amcl: the map from %s cannot be used: %s", source.c_str(), e.what());
+  // Applies a new map through `use` (a LocalizerCore::UseMaps / UseGrid call) and, if it was taken, publishes
+  // what changed; if refused, logs why: the session, the latched map and ~state stay as they were. Returns
+  // whether the map is now in force. Requires mutex_.
+  template <typename Use>
+  bool UseMaps(const Use& use, const std::string& source) {
+    const LocalizerCore::MapChange change = use();
+    if (!change.used) {
+      NODELET_ERROR("text amcl: the map from %s is refused: %s; %s", source.c_str(), change.problem.c_str(),
+                    core_->has_session() ? ("the map in force (" + core_->map_in_force() + ") is kept").c_str()
+                                         : "still waiting for a usable map");
       return false;
     }
-    if (!text_problem.empty()) {
-      NODELET_ERROR("%s cannot be used with the map from %s: %s; localizing with the laser alone",
-                    options_.text_map_file.c_str(), source.c_str(), text_problem.c_str());
-      text_map_.reset();
+    if (!change.text_problem.empty()) {
+      NODELET_ERROR("%s cannot be used with the map from %s: %s; localizing with the laser alone on it",
+                    options_.text_map_file.c_str(), source.c_str(), change.text_problem.c_str());
     }
-    session_ = std::move(session);
-    const BuildingSession& b = *session_;
+    const BuildingSession& b = core_->session();
     const OccupancyGrid& grid = b.maps().floors[static_cast<size_t>(b.floor())].grid;
     const TextAmclSessionOptions& o = options_.session;
     NODELET_INFO("text amcl: map %dx%d at %.3f m from %s (floor '%s' of %zu%s), %s laser model, %s; %d particles %s",
                  grid.width, grid.height, grid.resolution_m, source.c_str(), b.floor_id().c_str(),
                  b.maps().floors.size(), b.floor_certain() ? "" : ", until the plates decide",
                  ToString(o.setup.laser_model_type), b.session().has_text_map() ? "with doorplates" : "laser only",
-                 o.setup.filter.max_particles, o.start_with_global_localization ? "globally" : "at ~initial_pose_*");
+                 o.setup.filter.max_particles,
+                 change.ran_queued_global_localization ? "globally (the queued global_localization request)"
+                 : o.start_with_global_localization    ? "globally"
+                                                       : "at the start pose");
     PublishFloor(/*new_maps=*/true);
-    PublishFilter(ros::Time::now(), /*force_cloud=*/true);
+    PublishRestart();
     return true;
   }
 
   // ~floor, and the floor's grid on map (when the nodelet owns the map) and its plates on text_landmarks: for
   // new maps, and when the session has switched floors (logged). Requires mutex_ and a session.
   void PublishFloor(bool new_maps) {
-    const std::string& id = session_->floor_id();
+    const BuildingSession& session = core_->session();
+    const std::string& id = session.floor_id();
     if (!new_maps && id == floor_id_) return;
     if (!new_maps) {
       NODELET_INFO("text amcl: floor '%s' -> '%s' (the plates read; belief %.3f)", floor_id_.c_str(), id.c_str(),
-                   session_->belief().probabilities()[static_cast<size_t>(session_->floor())]);
+                   session.belief().probabilities()[static_cast<size_t>(session.floor())]);
     }
     floor_id_ = id;
-    const FloorMaps& floor = session_->maps().floors[static_cast<size_t>(session_->floor())];
+    const FloorMaps& floor = session.maps().floors[static_cast<size_t>(session.floor())];
     const ros::Time now = ros::Time::now();
     if (map_pub_) map_pub_.publish(ToOccupancyGridMsg(floor.grid, options_.global_frame_id, now));
     markers_pub_.publish(
@@ -145,14 +170,16 @@ class TextAmclNodelet : public nodelet::Nodelet {
 
   void OnMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (options_.first_map_only && session_) return;
+    if (options_.first_map_only && core_->has_session()) return;
+    const std::string& topic = map_sub_.getTopic();
     OccupancyGrid grid;
     const std::string problem = FromOccupancyGridMsg(*msg, &grid);
     if (!problem.empty()) {
-      NODELET_ERROR_THROTTLE(5.0, "%s: %s; ignoring this map", map_sub_.getTopic().c_str(), problem.c_str());
+      NODELET_ERROR_THROTTLE(5.0, "%s: %s; ignoring this map%s", topic.c_str(), problem.c_str(),
+                             core_->has_session() ? ", the map in force is kept" : "");
       return;
     }
-    UseMaps(OneFloorBuilding(grid, text_map_, options_.start_floor), map_sub_.getTopic());
+    UseMaps([&] { return core_->UseGrid(grid, topic); }, topic);
   }
 
   // amcl's default map source: the static_map service, retried every second until it answers.
@@ -171,63 +198,80 @@ class TextAmclNodelet : public nodelet::Nodelet {
       NODELET_ERROR_THROTTLE(10.0, "%s: %s; asking again", service.c_str(), problem.c_str());
       return;
     }
-    if (UseMaps(OneFloorBuilding(grid, text_map_, options_.start_floor), service)) map_timer_.stop();
+    if (UseMaps([&] { return core_->UseGrid(grid, service); }, service)) map_timer_.stop();
   }
 
+  // amcl's set_map: the map and the pose to start at. Validated whole before anything changes; refused: success
+  // false, the reason logged, the map in force kept.
   bool OnSetMap(nav_msgs::SetMap::Request& req, nav_msgs::SetMap::Response& res) {
     std::lock_guard<std::mutex> lock(mutex_);
+    const std::string& service = set_map_srv_.getService();
     OccupancyGrid grid;
-    Pose2D mean;
-    Eigen::Matrix3d covariance;
+    StartPose start;
     std::string problem = options_.building ? "the floors' maps come from " + options_.building_file : "";
     if (problem.empty()) problem = FromOccupancyGridMsg(req.map, &grid);
-    if (problem.empty()) problem = FromInitialPoseMsg(req.initial_pose, options_.global_frame_id, &mean, &covariance);
+    if (problem.empty()) {
+      problem = FromInitialPoseMsg(req.initial_pose, options_.global_frame_id, &start.mean, &start.covariance);
+      if (!problem.empty()) problem = "initial_pose: " + problem;
+    }
     if (!problem.empty()) {
-      NODELET_ERROR("%s: %s; map not changed", set_map_srv_.getService().c_str(), problem.c_str());
+      NODELET_ERROR("%s: %s; map not changed%s", service.c_str(), problem.c_str(),
+                    core_->has_session() ? ", the map in force is kept" : "");
       res.success = false;
       return true;
     }
-    options_.session.initial_pose = mean;
-    options_.session.initial_covariance = covariance;
-    res.success = UseMaps(OneFloorBuilding(grid, text_map_, options_.start_floor), set_map_srv_.getService());
+    const bool was_queued = core_->global_localization_queued();
+    res.success = UseMaps([&] { return core_->UseGrid(grid, service, start); }, service);
+    if (res.success && was_queued) {
+      NODELET_INFO("%s: the queued global_localization request is cancelled: set_map gave a start pose",
+                   service.c_str());
+    }
     return true;
   }
 
   bool OnGlobalLocalization(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!session_) {
-      NODELET_WARN("%s: no map yet; ignored", global_srv_.getService().c_str());
+    if (!core_->GlobalLocalization()) {
+      NODELET_WARN("%s: no map in force yet: queued; the first map used will start with global localization",
+                   global_srv_.getService().c_str());
+      PublishState();
       return true;
     }
-    session_->GlobalLocalization();
-    NODELET_INFO("text amcl: global localization on floor '%s'%s", session_->floor_id().c_str(),
-                 session_->floor_certain() ? "" : "; the floor is unknown until the plates decide");
-    PublishFilter(ros::Time::now(), /*force_cloud=*/true);
+    const BuildingSession& session = core_->session();
+    NODELET_INFO("text amcl: global localization on floor '%s'%s", session.floor_id().c_str(),
+                 session.floor_certain() ? "" : "; the floor is unknown until the plates decide");
+    PublishRestart();
     return true;
   }
 
   bool OnNoMotionUpdate(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (session_) session_->RequestNoMotionUpdate();
+    if (core_->has_session()) core_->session().RequestNoMotionUpdate();
     return true;
   }
 
   void OnInitialPose(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
-    Pose2D mean;
-    Eigen::Matrix3d covariance;
-    const std::string problem = FromInitialPoseMsg(*msg, options_.global_frame_id, &mean, &covariance);
+    const std::string& topic = initial_pose_sub_.getTopic();
+    StartPose pose;
+    std::string problem = FromInitialPoseMsg(*msg, options_.global_frame_id, &pose.mean, &pose.covariance);
+    const bool was_queued = core_->global_localization_queued();
+    if (problem.empty()) {
+      try {
+        core_->InitialPose(pose);  // restarts the session there, or is the start pose on the next map
+      } catch (const std::exception& e) {
+        problem = e.what();
+      }
+    }
     if (!problem.empty()) {
-      NODELET_WARN_THROTTLE(2.0, "%s: %s; ignored", initial_pose_sub_.getTopic().c_str(), problem.c_str());
+      NODELET_WARN_THROTTLE(2.0, "%s: %s; ignored", topic.c_str(), problem.c_str());
       return;
     }
-    options_.session.initial_pose = mean;  // also the start pose on the next map
-    options_.session.initial_covariance = covariance;
-    if (!session_) return;
-    session_->Initialize(session_->floor(), mean, covariance);
-    NODELET_INFO("text amcl: initial pose (%.3f, %.3f, %.3f) on floor '%s'", mean.x_m, mean.y_m, mean.theta_rad,
-                 session_->floor_id().c_str());
-    PublishFilter(ros::Time::now(), /*force_cloud=*/true);
+    if (was_queued) NODELET_INFO("%s: the queued global_localization request is cancelled", topic.c_str());
+    if (!core_->has_session()) return;
+    NODELET_INFO("text amcl: initial pose (%.3f, %.3f, %.3f) on floor '%s'", pose.mean.x_m, pose.mean.y_m,
+                 pose.mean.theta_rad, core_->session().floor_id().c_str());
+    PublishRestart();
   }
 
   // validate -> tf (laser mount, odometry) -> convert -> session -> publish.
@@ -236,10 +280,10 @@ class TextAmclNodelet : public nodelet::Nodelet {
     const std::string& topic = scan_sub_.getTopic();
     const std::string problem = ValidateScan(*msg);
     if (!problem.empty()) {
-      NODELET_WARN_THROTTLE(2.0, "%s: %s; scan ignored", topic.c_str(), problem.c_str());
+      NODELET_ERROR_THROTTLE(2.0, "%s: %s; scan ignored", topic.c_str(), problem.c_str());
       return;
     }
-    if (!session_) {
+    if (!core_->has_session()) {
       NODELET_WARN_THROTTLE(10.0, "%s: no map yet; scan ignored", topic.c_str());
       return;
     }
@@ -255,20 +299,30 @@ class TextAmclNodelet : public nodelet::Nodelet {
       NODELET_WARN_THROTTLE(2.0, "%s: %s; scan ignored", topic.c_str(), tf_problem.c_str());
       return;
     }
+    BuildingSession& session = core_->session();
     SessionUpdate update;
     try {
-      update = session_->AddScan(msg->header.stamp.toSec(), *base_in_odom, ToLocalizationScan(*msg, *laser_in_base));
-    } catch (const std::invalid_argument& e) {
-      NODELET_WARN_THROTTLE(2.0, "%s: %s; scan ignored", topic.c_str(), e.what());
+      update = session.AddScan(msg->header.stamp.toSec(), *base_in_odom, ToLocalizationScan(*msg, *laser_in_base));
+    } catch (const std::invalid_argument& e) {  // the scan (nothing changed)
+      NODELET_ERROR_THROTTLE(2.0, "%s: %s; scan ignored", topic.c_str(), e.what());
+      return;
+    } catch (const std::exception& e) {  // the session: no estimate until it takes a scan again
+      Failed(topic, e.what());
       return;
     }
+    core_->ScanTaken(ros::Time::now().toSec());
+    ++scans_since_health_;
     if (!update.scan_ignored_reason.empty()) {
       NODELET_WARN_THROTTLE(2.0, "%s: %s; scan ignored, continuing from it", topic.c_str(),
                             update.scan_ignored_reason.c_str());
     }
     ReportPlates(update, detections_sub_.getTopic());
-    if (update.estimate_changed) PublishFilter(msg->header.stamp, /*force_cloud=*/!update.plates.empty());
-    const std::optional<Pose2D>& map_to_odom = session_->MapToOdom();
+    if (update.estimate_changed) {
+      PublishFilter(msg->header.stamp, /*force_cloud=*/!update.plates.empty());
+    } else {
+      PublishState();  // e.g. waiting_for_scan -> the filter's state
+    }
+    const std::optional<Pose2D>& map_to_odom = session.MapToOdom();
     if (options_.tf_broadcast && map_to_odom) {
       const ros::Time stamp = msg->header.stamp + ros::Duration(options_.transform_tolerance_s);
       tf_broadcaster_->sendTransform(
@@ -283,8 +337,9 @@ class TextAmclNodelet : public nodelet::Nodelet {
     if (!any) return;  // most images report no plate
     std::lock_guard<std::mutex> lock(mutex_);
     const std::string& topic = detections_sub_.getTopic();
-    if (!session_) return;
-    if (!session_->session().has_text_map()) {
+    if (!core_->has_session()) return;
+    BuildingSession& session = core_->session();
+    if (!session.session().has_text_map()) {
       NODELET_WARN_ONCE("%s: doorplate readings are ignored: no usable text map (~text_map_file, ~use_text)",
                         topic.c_str());
       return;
@@ -295,7 +350,8 @@ class TextAmclNodelet : public nodelet::Nodelet {
                                           ros::Duration(options_.tf_timeout_s));
     } catch (const tf2::TransformException& e) {
       NODELET_WARN_THROTTLE(2.0, "%s: no tf from '%s' to %s: %s; detections ignored", topic.c_str(),
-                            msg->header.frame_id.c_str(), options_.base_frame_id.c_str(), e.what());
+                            limits::TruncateForLog(msg->header.frame_id).c_str(), options_.base_frame_id.c_str(),
+                            e.what());
       return;
     }
     CameraAxis axis;
@@ -316,14 +372,27 @@ class TextAmclNodelet : public nodelet::Nodelet {
     const std::optional<Pose2D> base_in_odom = LookupPlanarPose(tf_buffer_, options_.odom_frame_id,
                                                                 options_.base_frame_id, stamp,
                                                                 options_.tf_timeout_s, &odom_problem);
-    if (base_in_odom) {
-      ReportPlates(session_->AddOdometry(stamp_s, *base_in_odom), topic);
-    } else {
-      NODELET_DEBUG("%s: %s; the readings wait for the next scan's odometry", topic.c_str(), odom_problem.c_str());
+    try {
+      if (base_in_odom) {
+        ReportPlates(session.AddOdometry(stamp_s, *base_in_odom), topic);
+      } else {
+        NODELET_DEBUG("%s: %s; the readings wait for the next scan's odometry", topic.c_str(), odom_problem.c_str());
+      }
+      const SessionUpdate update = session.AddPlates(stamp_s, readings);
+      ReportPlates(update, topic);
+      if (update.estimate_changed) PublishFilter(stamp, /*force_cloud=*/true);
+    } catch (const std::exception& e) {
+      Failed(topic, e.what());
     }
-    const SessionUpdate update = session_->AddPlates(stamp_s, readings);
-    ReportPlates(update, topic);
-    if (update.estimate_changed) PublishFilter(stamp, /*force_cloud=*/true);
+  }
+
+  // The session threw while handling `topic`: logged, ~state says error until it takes a scan again.
+  // Requires mutex_.
+  void Failed(const std::string& topic, const std::string& what) {
+    NODELET_ERROR_THROTTLE(2.0, "%s: the localizer failed: %s; no estimate until it takes a scan again",
+                           topic.c_str(), what.c_str());
+    core_->Failed(what);
+    PublishState();
   }
 
   // Logs what became of the plate readings one session call resolved (unknown rooms once each).
@@ -333,7 +402,7 @@ class TextAmclNodelet : public nodelet::Nodelet {
         NODELET_INFO("text amcl: %s", DescribePlateOutcome(p).c_str());
       } else if (p.disposition == PlateDisposition::kUnknownRoomFirst) {
         NODELET_WARN("%s: %s (text map of floor '%s': %s); its readings are ignored", topic.c_str(),
-                     DescribePlateOutcome(p).c_str(), session_->floor_id().c_str(),
+                     DescribePlateOutcome(p).c_str(), core_->session().floor_id().c_str(),
                      (options_.building ? options_.building_file : options_.text_map_file).c_str());
       } else if (p.disposition == PlateDisposition::kStale || p.disposition == PlateDisposition::kInvalid) {
         NODELET_WARN_THROTTLE(2.0, "%s: %s", topic.c_str(), DescribePlateOutcome(p).c_str());
@@ -341,24 +410,34 @@ class TextAmclNodelet : public nodelet::Nodelet {
     }
   }
 
-  // amcl_pose and ~state (and the floor, if it changed); particlecloud when forced or due by
-  // ~gui_publish_rate. Requires mutex_.
-  void PublishFilter(const ros::Time& stamp, bool force_cloud) {
-    if (!session_) return;
+  // After a (re)start (a new map, initialpose, global_localization): the new particle cloud and ~state (now
+  // waiting_for_scan); amcl_pose waits for the first update, as amcl's. Requires mutex_ and a session.
+  void PublishRestart() {
     PublishFloor(/*new_maps=*/false);
-    const PoseEstimate& estimate = session_->Estimate();
-    pose_pub_.publish(ToAmclPoseMsg(estimate, options_.global_frame_id, stamp));
+    cloud_pub_.publish(ToParticleCloudMsg(core_->session().session().particles(), options_.global_frame_id,
+                                          ros::Time::now()));
+    last_cloud_time_ = ros::WallTime::now();
+    PublishState();
+  }
+
+  // amcl_pose and ~state (and the floor, if it changed); particlecloud when forced or due by
+  // ~gui_publish_rate. Requires mutex_ and a session.
+  void PublishFilter(const ros::Time& stamp, bool force_cloud) {
+    PublishFloor(/*new_maps=*/false);
+    const BuildingSession& session = core_->session();
+    pose_pub_.publish(ToAmclPoseMsg(session.Estimate(), options_.global_frame_id, stamp));
     const ros::WallTime now = ros::WallTime::now();
     const double rate = options_.gui_publish_rate_hz;
     if (force_cloud || rate <= 0.0 || (now - last_cloud_time_).toSec() >= 1.0 / rate) {
-      cloud_pub_.publish(ToParticleCloudMsg(session_->session().particles(), options_.global_frame_id, stamp));
+      cloud_pub_.publish(ToParticleCloudMsg(session.session().particles(), options_.global_frame_id, stamp));
       last_cloud_time_ = now;
     }
-    const TextAmclStatus& status = session_->Status();
-    PublishState(StateText(status.state, status.lost_reason));
+    PublishState();
   }
 
-  void PublishState(const std::string& state) {
+  // ~state as LocalizerCore says it now (published and logged when it changed). Requires mutex_.
+  void PublishState() {
+    const std::string state = core_->State(ros::Time::now().toSec());
     if (state == last_state_) return;
     last_state_ = state;
     std_msgs::String msg;
@@ -367,11 +446,37 @@ class TextAmclNodelet : public nodelet::Nodelet {
     NODELET_INFO("text amcl: %s", state.c_str());
   }
 
-  // amcl's save_pose_rate: the last estimate becomes ~initial_pose_* / ~initial_cov_* on the server.
+  // 1 Hz: ~state (a scan timeout shows here) and /diagnostics.
+  void OnHealthTimer(const ros::TimerEvent&) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const ros::Time now = ros::Time::now();
+    PublishState();
+    LocalizerHealth health = core_->Health(now.toSec());
+    const double elapsed_s = last_health_time_.isZero() ? 0.0 : (now - last_health_time_).toSec();
+    health.scan_rate_hz = elapsed_s > 0.0 ? scans_since_health_ / elapsed_s : 0.0;
+    scans_since_health_ = 0;
+    last_health_time_ = now;
+    try {
+      const ros::Time latest =
+          tf_buffer_.lookupTransform(options_.odom_frame_id, options_.base_frame_id, ros::Time(0)).header.stamp;
+      health.tf_age_s = std::max(0.0, (now - latest).toSec());
+    } catch (const tf2::TransformException&) {
+      health.tf_age_s = -1.0;
+    }
+    diagnostic_msgs::DiagnosticArray array;
+    array.header.stamp = now;
+    array.status.push_back(ToDiagnosticStatus(health, getName() + ": localization", getName()));
+    diagnostics_pub_.publish(array);
+  }
+
+  // amcl's save_pose_rate: the last estimate becomes ~initial_pose_* / ~initial_cov_* on the server (while
+  // estimates are being published only).
   void SavePose(const ros::TimerEvent&) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!session_) return;
-    const PoseEstimate& e = session_->Estimate();
+    if (!core_->has_session()) return;
+    const std::string state = core_->State(ros::Time::now().toSec());
+    if (state != "tracking" && state != "converged") return;
+    const PoseEstimate& e = core_->session().Estimate();
     const std::pair<const char*, double> saved[] = {
         {"initial_pose_x", e.pose.x_m},         {"initial_pose_y", e.pose.y_m},
         {"initial_pose_a", e.pose.theta_rad},   {"initial_cov_xx", e.covariance(0, 0)},
@@ -380,19 +485,20 @@ class TextAmclNodelet : public nodelet::Nodelet {
   }
 
   TextAmclNodeOptions options_;
-  std::shared_ptr<const TextMap> text_map_;   // one floor: ~text_map_file (null: laser only)
-  std::mutex mutex_;                          // guards everything below
-  std::unique_ptr<BuildingSession> session_;  // null until a map arrives
+  std::mutex mutex_;                     // guards everything below
+  std::unique_ptr<LocalizerCore> core_;  // the session (none until a map is in force) and its state
   ros::WallTime last_cloud_time_;
-  std::string last_state_, floor_id_;         // as last published
+  ros::Time last_health_time_;
+  int scans_since_health_ = 0;
+  std::string last_state_, floor_id_;  // as last published
   tf2_ros::Buffer tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   std::unique_ptr<tf2_ros::TransformBroadcaster> tf_broadcaster_;
-  ros::Publisher pose_pub_, cloud_pub_, markers_pub_, state_pub_, floor_pub_, map_pub_;
+  ros::Publisher pose_pub_, cloud_pub_, markers_pub_, state_pub_, floor_pub_, map_pub_, diagnostics_pub_;
   ros::Subscriber scan_sub_, initial_pose_sub_, detections_sub_, map_sub_;
   ros::ServiceServer global_srv_, nomotion_srv_, set_map_srv_;
   ros::WallTimer map_timer_;
-  ros::Timer save_timer_;
+  ros::Timer save_timer_, health_timer_;
 };
 
 }  // namespace doorplate_localization

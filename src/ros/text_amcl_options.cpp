@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "doorplate_localization/common/limits.h"
 #include "text_amcl_building.h"
 
 namespace doorplate_localization {
@@ -47,12 +48,15 @@ TextAmclSessionOptions AmclDefaultSessionOptions() {
 const ParamTable<O>& TextAmclParamTable() {
   namespace r = param_rules;
   const ParamRule unit_open_low = r::Holds("in (0, 1]", [](double v) { return v > 0.0 && v <= 1.0; });
+  // Checked before the filter allocates anything for them (common/limits.h).
+  const ParamRule particles = r::Holds("in [1, " + std::to_string(limits::kMaxParticles) + "] (limits::kMaxParticles)",
+                                       [](double v) { return v >= 1.0 && v <= limits::kMaxParticles; });
 #define F(path) DOORPLATE_PARAM_FIELD(session.setup.path)
   static const ParamTable<O> table = {
       // --- filter (amcl) ---
-      Param<O>("min_particles", F(filter.min_particles), "KLD-sampling lower bound", r::AtLeast(1)),
+      Param<O>("min_particles", F(filter.min_particles), "KLD-sampling lower bound", particles),
       Param<O>("max_particles", F(filter.max_particles), "KLD-sampling upper bound; initialization draws this many",
-               r::AtLeast(1)),
+               particles),
       Param<O>("kld_err", F(filter.kld_err), "KLD-sampling error bound (used as given, like amcl)", r::Positive()),
       Param<O>("kld_z", F(filter.kld_z), "KLD-sampling normal quantile", r::Positive()),
       Param<O>("update_min_d", F(filter.update_min_d_m), "travel (m) that triggers a filter update", r::NonNegative()),
@@ -154,6 +158,10 @@ const ParamTable<O>& TextAmclParamTable() {
       Param<O>("tf_timeout_s", DOORPLATE_PARAM_FIELD(tf_timeout_s), "(ours) how long a callback waits for a transform",
                r::NonNegative())
           .Deprecated("tf_timeout"),
+      Param<O>("scan_timeout_s", DOORPLATE_PARAM_FIELD(scan_timeout_s),
+               "(ours) no scan taken for this long (s, ROS time): `~state` says waiting_for_scan and the "
+               "diagnostic warns (no estimate is being published); <= 0: never",
+               r::Finite()),
       ConvertedParam<O, int>(
           "seed", "session.setup.filter.random_seed",
           [](const O& o) { return static_cast<int>(o.session.setup.filter.random_seed); },

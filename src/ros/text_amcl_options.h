@@ -54,6 +54,9 @@ struct TextAmclNodeOptions {
   // ~floor_misread_probability, ~floor_change_probability, ~floor_certain_probability (mcl/floor_belief.h).
   FloorBeliefOptions floor_belief;
   double tf_timeout_s = 0.1;            // ~tf_timeout_s (deprecated ~tf_timeout): how long a callback waits for tf
+  // ~scan_timeout_s: no scan taken for this long (ROS time) and ~state says waiting_for_scan (no estimate is
+  // being published); <= 0: never.
+  double scan_timeout_s = 2.0;
   double odom_alpha5 = 0.2;             // amcl's omni-only alpha: validated, unused by the diff models
   bool selective_resampling = false;    // amcl's; true is refused (not provided)
 };

@@ -56,13 +56,44 @@ TEST(ParsePgm, RejectsTruncatedAsciiData) {
 // Found by fuzz/map_image_fuzz (fuzz/corpus/map_image/regression_huge_header): a 20-byte file claiming
 // 65536 x 65536 pixels made the parser allocate 4 GB before noticing the data was missing. The size is now
 // checked against the bytes present before any allocation.
+// (65536 x 65536 is now refused by the cell limit first: the largest size within it shows the byte check.)
 TEST(ParsePgm, RejectsAHugeHeaderWithoutDataBeforeAllocatingItsPixels) {
-  const std::string binary = ErrorOf<MapFileError>([] { ParsePgm("P5 65536 65536 255 ", "big.pgm"); });
-  EXPECT_TRUE(Contains(binary, "big.pgm: pixel data: truncated, expected 4294967296 bytes after the header, got 0"))
+  const std::string binary = ErrorOf<MapFileError>([] { ParsePgm("P5 10000 10000 255 ", "big.pgm"); });
+  EXPECT_TRUE(Contains(binary, "big.pgm: pixel data: truncated, expected 100000000 bytes after the header, got 0"))
       << binary;
-  const std::string ascii = ErrorOf<MapFileError>([] { ParsePgm("P2 65536 65536 255 7", "big.pgm"); });
-  EXPECT_TRUE(Contains(ascii, "big.pgm: pixel data: truncated, expected 4294967296 values, got at most 1"))
+  const std::string ascii = ErrorOf<MapFileError>([] { ParsePgm("P2 10000 10000 255 7", "big.pgm"); });
+  EXPECT_TRUE(Contains(ascii, "big.pgm: pixel data: truncated, expected 100000000 values, got at most 1"))
       << ascii;
+}
+
+// Issue 18: a 20000 x 20000 map (4e8 cells, 400 MB of pixels that ARE present) is refused by its header
+// against limits::kMaxMapCells, naming the source and the limit.
+TEST(ParsePgm, RejectsMoreCellsThanTheLimitNamingIt) {
+  const std::string error = ErrorOf<MapFileError>([] { ParsePgm("P5 20000 20000 255 ", "huge.pgm"); });
+  EXPECT_TRUE(Contains(error, "huge.pgm: header: size 20000 x 20000 = 4e+08 cells, more than the limit of "
+                              "100000000 (limits::kMaxMapCells)"))
+      << error;
+  const std::string side = ErrorOf<MapFileError>([] { ParsePgm("P5 65536 65536 255 ", "huge.pgm"); });
+  EXPECT_TRUE(Contains(side, "limits::kMaxMapCells")) << side;
+}
+
+// ReadMapImage checks the size a PGM or PNG header states before reading the file whole: a PNG claiming
+// 20000 x 20000 (its IHDR chunk, no pixel data) is refused naming the file and the limit, not decoded.
+TEST(ReadMapImage, RefusesAPngOrPgmHeaderAboveTheCellLimitBeforeReadingThePixels) {
+  test::TempDir dir;
+  std::string png("\x89PNG\r\n\x1a\n", 8);
+  png += std::string("\0\0\0\x0d", 4) + "IHDR";
+  png += std::string("\0\0\x4e\x20\0\0\x4e\x20", 8);  // 20000 x 20000, big-endian
+  png += std::string("\x08\0\0\0\0", 5) + std::string(4, '\0');  // 8-bit grey, CRC (not checked)
+  const std::string png_path = dir.Write("huge.png", png);
+  const std::string error = ErrorOf<MapFileError>([&] { ReadMapImage(png_path); });
+  EXPECT_TRUE(Contains(error, png_path + ": header: size 20000 x 20000 = 4e+08 cells")) << error;
+  const std::string pgm_path = dir.Write("huge.pgm", "P5\n# a comment\n20000 20000\n255\n0123");
+  const std::string pgm_error = ErrorOf<MapFileError>([&] { ReadMapImage(pgm_path); });
+  EXPECT_TRUE(Contains(pgm_error, pgm_path + ": header: size 20000 x 20000")) << pgm_error;
+  // Within the limit, the same truncated file is still refused, by the pixel check.
+  const std::string small = dir.Write("small.pgm", "P5\n200 200\n255\n0123");
+  EXPECT_TRUE(Contains(ErrorOf<MapFileError>([&] { ReadMapImage(small); }), "pixel data: truncated"));
 }
 
 TEST(ParsePgm, RejectsTruncatedHeader) {

@@ -119,6 +119,12 @@ TEST(LoadOccupancyMap, EachBrokenFileGivesAnErrorNamingTheFileAndField) {
       {"bad mode", ok + "mode: fuzzy\n", "mode: must be trinary, scale or raw, got 'fuzzy'"},
       {"bad negate", with("negate: 0", "negate: 2"), "negate: must be 0 or 1, got '2'"},
       {"syntax error", ok + "origin: [\n", "line "},
+      // common/limits.h bounds (issue 18)
+      {"resolution below 1 mm", with("resolution: 0.1", "resolution: 0.00001"),
+       "resolution: must be finite and in [0.001, 100] m (limits::kMinMapResolutionM, kMaxMapResolutionM)"},
+      {"origin far away", with("[-1.0, 2.0, 0.0]", "[1e300, 2.0, 0.0]"),
+       "origin: x must be finite and within +-1e+06 m (limits::kMaxCoordinateM), got 1e+300"},
+      {"origin y far away", with("[-1.0, 2.0, 0.0]", "[-1.0, -2e6, 0.0]"), "origin: y must be finite and within"},
   };
   for (const BrokenCase& c : cases) {
     test::TempDir dir;
@@ -127,6 +133,18 @@ TEST(LoadOccupancyMap, EachBrokenFileGivesAnErrorNamingTheFileAndField) {
     const std::string error = ErrorOf<MapFileError>([&] { LoadOccupancyMap(path); });
     EXPECT_TRUE(Contains(error, path + ": " + c.expected)) << c.name << ": " << error;
   }
+}
+
+// A 20000 x 20000 image (4e8 cells) is refused from its header, naming the image and the limit, before
+// the file is read or the grid allocated; 10 bytes of pixels stand for the 400 MB a real one would hold.
+TEST(LoadOccupancyMap, RefusesAnImageLargerThanTheCellLimitFromItsHeader) {
+  test::TempDir dir;
+  const std::string image = dir.Write("m.pgm", "P5\n20000 20000\n255\n0123456789");
+  const std::string path = dir.Write("m.yaml", kYaml);
+  const std::string error = ErrorOf<MapFileError>([&] { LoadOccupancyMap(path); });
+  EXPECT_TRUE(Contains(error, image + ": header: size 20000 x 20000 = 4e+08 cells, more than the limit of "
+                                      "100000000 (limits::kMaxMapCells)"))
+      << error;
 }
 
 TEST(LoadOccupancyMap, BrokenImagesAreReportedWithTheImagePath) {

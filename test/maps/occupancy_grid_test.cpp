@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -60,6 +61,20 @@ TEST(OccupancyGrid, ConstructorRejectsNonPositiveResolutionAndNegativeSize) {
   EXPECT_THROW(OccupancyGrid(2, 2, 0.0, {}), std::invalid_argument);
   EXPECT_THROW(OccupancyGrid(2, 2, std::nan(""), {}), std::invalid_argument);
   EXPECT_THROW(OccupancyGrid(-1, 2, 0.1, {}), std::invalid_argument);
+}
+
+// Issue 18: more cells than limits::kMaxMapCells is refused before the 400 MB are allocated, naming the limit.
+TEST(OccupancyGrid, ConstructorRefusesMoreCellsThanTheLimitBeforeAllocating) {
+  try {
+    OccupancyGrid(20000, 20000, 0.05, {});
+    FAIL() << "a 20000 x 20000 grid was made";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("20000 x 20000 = 4e+08 cells, more than the limit of 100000000 "
+                                         "(limits::kMaxMapCells)"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(OccupancyGrid(10000, 1, 0.05, {}).cells.size(), 10000u);
 }
 
 }  // namespace

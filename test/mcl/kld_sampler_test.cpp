@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include <stdexcept>
 
 namespace doorplate_localization {
@@ -72,6 +74,21 @@ TEST(KldSampler, RejectsBadOptionsNamingTheField) {
   o = KldSamplerOptions();
   o.kld_err = 0.0;
   EXPECT_THROW(KldSampler{o}, std::invalid_argument);
+}
+
+// Issue 18: `--max-particles 1e9` gave std::bad_alloc; now the limit is named before anything is reserved.
+TEST(KldSampler, RefusesMoreParticlesThanTheLimitBeforeReservingThem) {
+  KldSamplerOptions o;
+  o.max_particles = 1000000000;
+  try {
+    KldSampler kld(o);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "KldSampler: max_particles: must be <= 1000000 (limits::kMaxParticles), got 1000000000");
+  }
+  o.max_particles = 1000000;
+  EXPECT_NO_THROW(KldSampler{o});
 }
 
 }  // namespace

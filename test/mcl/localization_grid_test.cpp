@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "mcl_fixtures.h"
 
@@ -82,6 +84,41 @@ TEST(LocalizationGrid, RejectsInconsistentGridsNamingTheField) {
   const LocalizationGrid no_free(test::MakeGrid(0, 0, 1.0, 1.0, 0.1, OccupancyGrid::kOccupied));
   std::mt19937_64 rng(1);
   EXPECT_THROW(no_free.SampleFreePose(rng), std::logic_error);
+  EXPECT_EQ(NoFreeCellProblem(no_free), "no free cell: all 100 cells are occupied or unknown");
+  EXPECT_EQ(NoFreeCellProblem(LocalizationGrid(test::MakeGrid(0, 0, 1.0, 1.0, 0.1, OccupancyGrid::kFree))), "");
+}
+
+// What the error says, or "" when the grid is accepted.
+std::string ProblemOf(const OccupancyGrid& g) {
+  try {
+    LocalizationGrid grid(g);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Issue 18: common/limits.h's bounds on resolution and origin, naming the field and the limit.
+TEST(LocalizationGrid, RejectsAResolutionOrOriginOutsideTheLimits) {
+  OccupancyGrid g = test::MakeGrid(0, 0, 1.0, 1.0);
+  g.resolution_m = 1e-5;
+  EXPECT_NE(ProblemOf(g).find("OccupancyGrid.resolution_m: must be finite and in [0.001, 100] m"), std::string::npos)
+      << ProblemOf(g);
+  g = test::MakeGrid(0, 0, 1.0, 1.0);
+  g.origin.x_m = 1e300;
+  EXPECT_NE(ProblemOf(g).find("OccupancyGrid.origin.x_m: must be finite and within +-1e+06 m (limits::kMaxCoordinateM)"),
+            std::string::npos)
+      << ProblemOf(g);
+  g.origin.x_m = -9e5;  // far, but within the bound
+  EXPECT_EQ(ProblemOf(g), "");
+  g.origin.theta_rad = std::nan("");
+  EXPECT_NE(ProblemOf(g).find("OccupancyGrid.origin.theta_rad: must be finite"), std::string::npos);
+  // A grid claiming more cells than the limit (its cells are never allocated: they do not match anyway).
+  g = test::MakeGrid(0, 0, 1.0, 1.0);
+  g.width = g.height = 20000;
+  EXPECT_NE(ProblemOf(g).find("OccupancyGrid.width/height: 20000 x 20000 = 4e+08 cells, more than the limit"),
+            std::string::npos)
+      << ProblemOf(g);
 }
 
 }  // namespace

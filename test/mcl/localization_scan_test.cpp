@@ -86,6 +86,12 @@ TEST(ValidateLocalizationScan, NamesTheBadField) {
   s.max_range_m = 0.05;
   EXPECT_NE(ValidateLocalizationScan(s).find("max_range_m"), std::string::npos);
   EXPECT_THROW(SelectBeams(s, {}), std::invalid_argument);
+  s = Scan(4);
+  s.ranges_m.assign(100001, 1.0f);  // issue 18: more than limits::kMaxScanBeams
+  EXPECT_EQ(ValidateLocalizationScan(s),
+            "LocalizationScan.ranges_m: 100001 beams, more than the limit of 100000 (limits::kMaxScanBeams)");
+  s.ranges_m.resize(100000);
+  EXPECT_EQ(ValidateLocalizationScan(s), "");
 }
 
 // --- RangeAlongBearing / PlateReadingAt ---

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 namespace doorplate_localization {
 namespace {
@@ -34,6 +35,16 @@ TEST(ValidatePlateReading, NamesTheBadField) {
   EXPECT_NE(error_of([](PlateReading& r) { r.bearing_rad = -1.5; }).find("left camera"), std::string::npos);
   EXPECT_EQ(error_of([](PlateReading& r) { r.bearing_rad = -1.5, r.camera_side = CameraSide::kRight; }), "");
   EXPECT_EQ(error_of([](PlateReading& r) { r.range_m.reset(); }), "");
+}
+
+// Issue 18: a 1 MB text is refused by its length, before any matching, and the message never quotes it.
+TEST(ValidatePlateReading, RefusesATextLongerThanTheLimitWithoutQuotingIt) {
+  PlateReading r = Good();
+  r.text.assign(1 << 20, '7');
+  const std::string error = ValidatePlateReading(r);
+  EXPECT_EQ(error, "PlateReading.text: 1048576 bytes, more than the limit of 64 (limits::kMaxPlateTextBytes)");
+  r.text.assign(64, '7');  // at the limit: a (strange) text, but not refused for its length
+  EXPECT_EQ(ValidatePlateReading(r), "");
 }
 
 TEST(CanonicalPlateText, UppercasesAndDropsSpacesAndDashes) {

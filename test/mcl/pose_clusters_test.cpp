@@ -45,6 +45,20 @@ TEST(ParticleStatistics, ComputesTheWeightedCovariance) {
   EXPECT_NEAR(HeadingStddev(c), std::sqrt(-2.0 * std::log(std::cos(0.2))), 1e-12);
 }
 
+// amcl's overall filter covariance (amcl_pose): two hypotheses 10 m apart with equal weight give a variance
+// of 25 m² along x, whatever each cluster's own spread.
+TEST(SetStatistics, IsTheWholeSetsWeightedCovarianceAboutItsMean) {
+  std::vector<Particle> ps{{{0.0, 0.0, 0.0}, 0.25}, {{0.0, 0.0, 0.0}, 0.25}, {{10.0, 0.0, 0.0}, 0.5}};
+  const PoseCluster all = SetStatistics(ps);
+  EXPECT_NEAR(all.mean.x_m, 5.0, 1e-12);
+  EXPECT_NEAR(all.covariance(0, 0), 25.0, 1e-12);
+  EXPECT_NEAR(all.covariance(1, 1), 0.0, 1e-12);
+  EXPECT_NEAR(all.weight, 1.0, 1e-12);
+  const ClusterResult clusters = ClusterParticles(ps, {});
+  ASSERT_EQ(clusters.clusters.size(), 2u);
+  EXPECT_NEAR(clusters.clusters[0].covariance(0, 0), 0.0, 1e-12);  // each hypothesis alone is a point
+}
+
 TEST(PositionStddev, IsTheLargestSpreadOfACorrelatedCloud) {
   PoseCluster c;
   c.covariance(0, 0) = c.covariance(1, 1) = 0.05;

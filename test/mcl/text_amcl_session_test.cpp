@@ -86,6 +86,31 @@ TEST(TextAmclSession, AnUnknownRoomIsDroppedOnArrivalCountedAndReportedOnce) {
   EXPECT_FALSE(first.estimate_changed);
 }
 
+// Issue 18: OCR garbage over a long run must not grow the remembered rooms without bound; past
+// limits::kMaxRememberedUnknownRooms they are still counted (and reported as already seen), and a text
+// longer than limits::kMaxPlateTextBytes is refused as invalid before it is matched or remembered.
+TEST(TextAmclSession, RemembersAtMostTheLimitOfUnknownRoomsAndRefusesOverlongTexts) {
+  const Fixture f;
+  TextAmclSession session = f.Make(f.Options());
+  PlateReading unknown = test::ReadingOf(f.plate(), f.robot());
+  int first = 0;
+  for (int i = 0; i < 1005; ++i) {
+    unknown.text = std::to_string(900000 + i);
+    const SessionUpdate u = session.AddPlates(0.0, {unknown});
+    ASSERT_EQ(u.plates.size(), 1u);
+    first += u.plates[0].disposition == PlateDisposition::kUnknownRoomFirst;
+  }
+  EXPECT_EQ(first, 1000);
+  EXPECT_EQ(session.unknown_rooms().size(), 1000u);
+  EXPECT_EQ(session.counters().unknown_room_readings, 1005);
+  unknown.text.assign(1 << 20, '1');
+  const SessionUpdate huge = session.AddPlates(0.0, {unknown});
+  ASSERT_EQ(huge.plates.size(), 1u);
+  EXPECT_EQ(huge.plates[0].disposition, PlateDisposition::kInvalid);
+  EXPECT_NE(huge.plates[0].detail.find("1048576 bytes, more than the limit of 64"), std::string::npos);
+  EXPECT_EQ(session.unknown_rooms().size(), 1000u);
+}
+
 TEST(TextAmclSession, ALaserOnlySessionDropsEveryReading) {
   const Fixture f;
   TextAmclSession session = f.Make(f.Options(), /*with_text_map=*/false);

@@ -84,5 +84,17 @@ TEST(MakeTextAmclTest, RejectsAnEmptyTextMapAndBadOptionsNamingThem) {
   EXPECT_THROW(MakeTextAmcl(bad, room, nullptr), std::invalid_argument);
 }
 
+// Issue 18: an all-occupied map (set_map of 100 x 100 cells of 100) threw from SampleFreePose at the first
+// global localization; it is refused when the filter is made, naming the map.
+TEST(MakeTextAmclTest, RefusesAMapWithoutAFreeCell) {
+  const OccupancyGrid walls = test::MakeGrid(0, 0, 5.0, 5.0, 0.05, OccupancyGrid::kOccupied);  // 100 x 100
+  try {
+    MakeTextAmcl(TextAmclSetupOptions(), walls, nullptr);
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "map: no free cell: all 10000 cells are occupied or unknown");
+  }
+}
+
 }  // namespace
 }  // namespace doorplate_localization

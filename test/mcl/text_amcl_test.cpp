@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "amcl_drive.h"
 
@@ -39,6 +40,48 @@ TEST_F(TextAmclTest, RejectsMissingModelsAndBadOptionsNamingTheField) {
   setup_ = test::FilterSetup();
   setup_.amcl.min_particles = 0;
   EXPECT_THROW(test::MakeFilter(room_, nullptr, setup_), std::invalid_argument);
+}
+
+// Issue 18: absurd particle counts and maps without free space are refused when the filter is made, naming
+// the limit or the grid, so that neither Initialize nor GlobalLocalization can fail later.
+TEST_F(TextAmclTest, RefusesTooManyParticlesAndAGridWithoutFreeSpace) {
+  setup_.amcl.max_particles = 1000000000;
+  try {
+    test::MakeFilter(room_, nullptr, setup_);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("max_particles: must be <= 1000000 (limits::kMaxParticles)"),
+              std::string::npos)
+        << e.what();
+  }
+  setup_ = test::FilterSetup();
+  auto walls = std::make_shared<LocalizationGrid>(test::MakeGrid(0, 0, 2.0, 2.0, 0.1, OccupancyGrid::kOccupied));
+  try {
+    test::MakeFilter(walls, nullptr, setup_);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "TextAmcl: models.grid: no free cell: all 400 cells are occupied or unknown");
+  }
+}
+
+// amcl_pose's covariance is amcl's: the whole particle set's, not the heaviest cluster's (kept beside it;
+// pose_clusters_test shows the two apart for two hypotheses).
+TEST_F(TextAmclTest, EstimateCarriesTheWholeSetsCovarianceAndTheHeaviestClustersBesideIt) {
+  setup_.amcl.max_particles = 2000;
+  auto amcl = test::MakeFilter(room_, nullptr, setup_);
+  amcl->GlobalLocalization();
+  const PoseEstimate e = amcl->Estimate();
+  const PoseCluster all = SetStatistics(amcl->particles());
+  const PoseCluster& best = amcl->Clusters().clusters.front();
+  EXPECT_TRUE(e.covariance.isApprox(all.covariance, 1e-12)) << e.covariance;
+  EXPECT_TRUE(e.cluster_covariance.isApprox(best.covariance, 1e-12)) << e.cluster_covariance;
+  EXPECT_EQ(e.pose.x_m, best.mean.x_m);
+  EXPECT_GT(e.covariance(0, 0), 1.0) << "spread over the room";
+  // Converged on a known pose, both are small and close.
+  amcl->Initialize({2.0, 1.5, 0.3}, Covariance(0.05, 0.02));
+  const PoseEstimate tight = amcl->Estimate();
+  EXPECT_NEAR(tight.covariance(0, 0), 0.05 * 0.05, 0.001);
+  EXPECT_EQ(tight.covariance(0, 2), 0.0);  // x/y-heading terms 0, as amcl
 }
 
 TEST_F(TextAmclTest, InitializeDrawsMaxParticlesFromTheGivenGaussian) {

@@ -4,10 +4,14 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include <tf2/LinearMath/Quaternion.h>
 #include <tf2/utils.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
+
+#include "doorplate_localization/common/limits.h"
 
 namespace doorplate_localization {
 namespace {
@@ -74,6 +78,19 @@ TEST(ToPlateReadings, ReportsAnInvalidReadingAndKeepsTheOthers) {
   EXPECT_NE(problems[0].find("detection '214'"), std::string::npos);
   EXPECT_NE(problems[0].find("confidence"), std::string::npos);
   EXPECT_NE(problems[1].find("bearing"), std::string::npos);
+}
+
+// Issue 18: a 1 MB detection text is refused by its length and quoted cut short (100 such messages made
+// 40 MB of rosout.log).
+TEST(ToPlateReadings, RefusesAnOverlongTextQuotingOnlyItsStart) {
+  TextDetectionArray msg;
+  msg.detections = {Detection(std::string(1 << 20, '4'), 0.0f, true)};
+  std::vector<std::string> problems;
+  EXPECT_TRUE(ToPlateReadings(msg, CameraAxis{0.0, 1.0}, &problems).empty());
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0], "detection '" + std::string(64, '4') +
+                             "... (1048576 bytes)': PlateReading.text: 1048576 bytes, more than the limit of 64 "
+                             "(limits::kMaxPlateTextBytes)");
 }
 
 geometry_msgs::PoseWithCovarianceStamped InitialPose() {
@@ -174,6 +191,82 @@ TEST(DescribePlateOutcome, SaysWhatBecameOfTheReading) {
   stale.stamp_s = 12.3;
   stale.detail = "older than the odometry kept";
   EXPECT_EQ(DescribePlateOutcome(stale), "plate '999' at 12.300 s ignored (stale): older than the odometry kept");
+}
+
+TEST(DescribePlateOutcome, QuotesAtMostTheLoggedTextLimit) {
+  PlateReadingOutcome invalid;
+  invalid.reading.text = std::string(1000, 'x') + "\xc3\xa9";
+  invalid.disposition = PlateDisposition::kInvalid;
+  invalid.detail = "too long";
+  const std::string line = DescribePlateOutcome(invalid);
+  EXPECT_EQ(line, "plate '" + std::string(64, 'x') + "... (1002 bytes)' at 0.000 s ignored (invalid): too long");
+  // A cut never splits a UTF-8 character: 63 x then a 2-byte character at bytes 63-64 is cut before it.
+  EXPECT_EQ(limits::TruncateForLog(std::string(63, 'x') + "\xc3\xa9" + "yy"), std::string(63, 'x') + "... (67 bytes)");
+}
+
+// --- ~state and /diagnostics (LocalizerHealth) ---
+
+LocalizerHealth Flowing(LocalizationState state) {
+  LocalizerHealth h;
+  h.map_in_force = true;
+  h.map = "/amcl/map_file: 40 x 20 at 0.100 m";
+  h.scan_age_s = 0.1;
+  h.scan_timeout_s = 2.0;
+  h.status.state = state;
+  return h;
+}
+
+TEST(NodeStateText, SaysConvergedOnlyWhileAMapIsInForceAndScansAreTaken) {
+  EXPECT_EQ(NodeStateText(Flowing(LocalizationState::kConverged)), "converged");
+  LocalizerHealth h = Flowing(LocalizationState::kConverged);
+  h.map_in_force = false;
+  EXPECT_EQ(NodeStateText(h), "waiting_for_map");
+  h = Flowing(LocalizationState::kConverged);
+  h.scan_age_s = -1.0;  // none since the (re)start
+  EXPECT_EQ(NodeStateText(h), "waiting_for_scan");
+  h.scan_age_s = 2.5;  // stale
+  EXPECT_EQ(NodeStateText(h), "waiting_for_scan");
+  h.scan_timeout_s = 0.0;  // never stale
+  EXPECT_EQ(NodeStateText(h), "converged");
+  h.error = "std::bad_alloc";
+  EXPECT_EQ(NodeStateText(h), "error: std::bad_alloc");
+  h = Flowing(LocalizationState::kLost);
+  h.status.lost_reason = LostReason::kPlateContradiction;
+  EXPECT_EQ(NodeStateText(h), "lost: plate_contradiction");
+}
+
+TEST(ToDiagnosticStatus, GivesTheLevelTheStateAndTheFiguresAUserChecks) {
+  LocalizerHealth h = Flowing(LocalizationState::kConverged);
+  h.scan_rate_hz = 9.96;
+  h.tf_age_s = 0.04;
+  h.status.particle_count = 500;
+  h.plates_used = 3;
+  diagnostic_msgs::DiagnosticStatus d = ToDiagnosticStatus(h, "/amcl: localization", "/amcl");
+  EXPECT_EQ(d.level, diagnostic_msgs::DiagnosticStatus::OK);
+  EXPECT_EQ(d.message, "converged");
+  EXPECT_EQ(d.name, "/amcl: localization");
+  const auto value = [&d](const std::string& key) {
+    for (const auto& kv : d.values) {
+      if (kv.key == key) return kv.value;
+    }
+    return std::string("(missing)");
+  };
+  EXPECT_EQ(value("state"), "converged");
+  EXPECT_EQ(value("map in force"), "/amcl/map_file: 40 x 20 at 0.100 m");
+  EXPECT_EQ(value("scan rate (Hz)"), "10.0");
+  EXPECT_EQ(value("odometry tf age (s)"), "0.04");
+  EXPECT_EQ(value("particles"), "500");
+  EXPECT_EQ(value("plates used"), "3");
+  EXPECT_EQ(value("last error"), "none");
+  h.map_in_force = false;
+  h.global_localization_queued = true;
+  d = ToDiagnosticStatus(h, "n", "h");
+  EXPECT_EQ(d.level, diagnostic_msgs::DiagnosticStatus::WARN);
+  EXPECT_EQ(d.message, "waiting_for_map (global_localization queued until a map is in force)");
+  EXPECT_EQ(value("map in force"), "none");
+  h.map_in_force = true;
+  h.error = "boom";
+  EXPECT_EQ(ToDiagnosticStatus(h, "n", "h").level, diagnostic_msgs::DiagnosticStatus::ERROR);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include <tf2/utils.h>
 
@@ -42,6 +43,27 @@ TEST(FromOccupancyGridMsg, NamesTheBrokenFieldAndLeavesTheGridAlone) {
   msg.info.origin.orientation.w = 0.0;  // an all-zero quaternion
   EXPECT_EQ(FromOccupancyGridMsg(msg, &untouched), "info.origin must be a finite pose with a non-zero quaternion");
   EXPECT_EQ(untouched.width, 1);
+}
+
+TEST(FromOccupancyGridMsg, RefusesAbsurdSizesResolutionsAndOriginsNamingTheFieldAndTheLimit) {
+  OccupancyGrid untouched(1, 1, 1.0, Pose2D{});
+  nav_msgs::OccupancyGrid msg = ToOccupancyGridMsg(OccupancyGrid(3, 4, 0.1, Pose2D{}), "map", ros::Time());
+  msg.info.width = msg.info.height = 20000;  // data still holds 12 cells: the size is refused first
+  std::string problem = FromOccupancyGridMsg(msg, &untouched);
+  EXPECT_NE(problem.find("info.width x info.height: 20000 x 20000"), std::string::npos) << problem;
+  EXPECT_NE(problem.find("limits::kMaxMapCells"), std::string::npos) << problem;
+  msg.info.width = 3;
+  msg.info.height = 4;
+  msg.info.resolution = 1e-6f;
+  problem = FromOccupancyGridMsg(msg, &untouched);
+  EXPECT_NE(problem.find("info.resolution must be finite and in [0.001, 100]"), std::string::npos) << problem;
+  msg.info.resolution = 0.1f;
+  msg.info.origin.position.y = -1e300;
+  problem = FromOccupancyGridMsg(msg, &untouched);
+  EXPECT_NE(problem.find("info.origin.position.y must be finite and within +-1e+06 m"), std::string::npos) << problem;
+  msg.info.origin.position.y = 9.9e5;  // within the bound
+  EXPECT_EQ(FromOccupancyGridMsg(msg, &untouched), "");
+  EXPECT_EQ(untouched.width, 3);
 }
 
 TEST(ToOccupancyGridMsg, KeepsCellsGeometryAndFrame) {

@@ -4,10 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace doorplate_localization {
 namespace {
@@ -157,6 +159,122 @@ TEST(StartBuildingSession, OnSeveralFloorsTheTextMapsAreRequiredAndAnUnknownStar
   TextAmclNodeOptions on3 = SmallFilter();
   on3.start_floor = "3";
   EXPECT_EQ(StartBuildingSession(ToBuildingSessionOptions(on3), maps, &problem)->floor_id(), "3");
+}
+
+// --- LocalizerCore: the nodelet's requests and ~state (issue 18, issue 19's amcl habits) ---
+
+// SmallFilter started at a known pose in the room (not globally).
+TextAmclNodeOptions AtAPose() {
+  TextAmclNodeOptions o = SmallFilter();
+  o.session.start_with_global_localization = false;
+  o.session.initial_pose = {1.0, 1.0, 0.0};
+  o.session.initial_covariance = Eigen::Vector3d(0.01, 0.01, 0.001).asDiagonal();
+  return o;
+}
+
+double SpreadX(const BuildingSession& session) {
+  double lo = 1e9, hi = -1e9;
+  for (const Particle& p : session.session().particles()) {
+    lo = std::min(lo, p.pose.x_m);
+    hi = std::max(hi, p.pose.x_m);
+  }
+  return hi - lo;
+}
+
+TEST(LocalizerCore, ARefusedMapLeavesTheSessionTheMapAndTheStateAsTheyWere) {
+  LocalizerCore core(AtAPose(), nullptr);
+  EXPECT_EQ(core.State(0.0), "waiting_for_map");
+  const LocalizerCore::MapChange first = core.UseMaps(Room("", true), "/amcl/map_file");
+  ASSERT_TRUE(first.used) << first.problem;
+  EXPECT_EQ(core.State(1.0), "waiting_for_scan");
+  core.ScanTaken(1.0);
+  const std::string state = core.State(1.5);
+  const BuildingSession* before = &core.session();
+  const std::vector<Particle> particles = core.session().session().particles();
+  const std::string map = core.map_in_force();
+  EXPECT_EQ(map, "/amcl/map_file: 40 x 20 at 0.100 m");
+
+  // set_map of an all-occupied 100 x 100 map (issue 18): refused, naming why; nothing changed.
+  const OccupancyGrid walls(100, 100, 0.05, Pose2D{}, OccupancyGrid::kOccupied);
+  const LocalizerCore::MapChange refused = core.UseGrid(walls, "/set_map", StartPose{{1.0, 1.0, 0.0}});
+  EXPECT_FALSE(refused.used);
+  EXPECT_NE(refused.problem.find("no free cell: all 10000 cells are occupied or unknown"), std::string::npos)
+      << refused.problem;
+  EXPECT_EQ(&core.session(), before);
+  EXPECT_EQ(core.session().session().particles().size(), particles.size());
+  EXPECT_EQ(core.session().session().particles()[0].pose.x_m, particles[0].pose.x_m);
+  EXPECT_EQ(core.map_in_force(), map);
+  EXPECT_EQ(core.State(1.5), state);
+  // Global localization still works on the map in force.
+  EXPECT_TRUE(core.GlobalLocalization());
+  EXPECT_GT(SpreadX(core.session()), 3.0);
+  // An absurd map (20000 x 20000 would be refused by the message check; here a grid beyond the cell limit
+  // cannot even be made) and a grid too fine are refused the same way.
+  OccupancyGrid fine(4, 4, 0.1, Pose2D{}, OccupancyGrid::kFree);
+  fine.resolution_m = 1e-6;
+  EXPECT_NE(core.UseGrid(fine, "/map").problem.find("resolution_m"), std::string::npos);
+  EXPECT_EQ(&core.session(), before);
+}
+
+TEST(LocalizerCore, GlobalLocalizationBeforeAMapIsQueuedAndStartsTheFirstMapGlobally) {
+  LocalizerCore core(AtAPose(), nullptr);
+  EXPECT_FALSE(core.GlobalLocalization()) << "no map: queued, not run";
+  EXPECT_TRUE(core.global_localization_queued());
+  EXPECT_EQ(NodeStateText(core.Health(0.0)), "waiting_for_map");
+  EXPECT_TRUE(core.Health(0.0).global_localization_queued);
+  // A refused map keeps the request queued.
+  EXPECT_FALSE(core.UseGrid(OccupancyGrid(10, 10, 0.1, Pose2D{}, OccupancyGrid::kOccupied), "/map").used);
+  EXPECT_TRUE(core.global_localization_queued());
+  const LocalizerCore::MapChange change = core.UseMaps(Room("", true), "/map");
+  ASSERT_TRUE(change.used) << change.problem;
+  EXPECT_TRUE(change.ran_queued_global_localization);
+  EXPECT_FALSE(core.global_localization_queued());
+  EXPECT_GT(SpreadX(core.session()), 3.0) << "spread over the 4 m room, not at ~initial_pose (1, 1)";
+  // With a text map, converged waits for a plate (converge_after_plate), so no early false "converged".
+  EXPECT_NE(core.session().Status().state, LocalizationState::kConverged);
+}
+
+TEST(LocalizerCore, AnInitialPoseOrASetMapPoseCancelsAQueuedGlobalLocalization) {
+  LocalizerCore core(AtAPose(), nullptr);
+  core.GlobalLocalization();
+  core.InitialPose(StartPose{{3.0, 1.0, 0.0}, Eigen::Vector3d(0.01, 0.01, 0.001).asDiagonal()});
+  EXPECT_FALSE(core.global_localization_queued());
+  const LocalizerCore::MapChange change = core.UseMaps(Room("", true), "/map");
+  ASSERT_TRUE(change.used);
+  EXPECT_FALSE(change.ran_queued_global_localization);
+  EXPECT_NEAR(core.session().Estimate().pose.x_m, 3.0, 0.1) << "the latest request (the pose) wins";
+  core.GlobalLocalization();  // runs now: a map is in force
+  EXPECT_GT(SpreadX(core.session()), 3.0);
+  const LocalizerCore::MapChange set_map = core.UseGrid(Room("", true)->floors[0].grid, "/set_map",
+                                                        StartPose{{2.0, 1.0, 0.0}, Eigen::Matrix3d::Identity() * 1e-4});
+  ASSERT_TRUE(set_map.used) << set_map.problem;
+  EXPECT_NEAR(core.session().Estimate().pose.x_m, 2.0, 0.05) << "set_map starts at its pose";
+  // An initial pose the filter refuses (not positive semi-definite) changes nothing.
+  const double x = core.session().Estimate().pose.x_m;
+  EXPECT_THROW(core.InitialPose(StartPose{{1.0, 1.0, 0.0}, -Eigen::Matrix3d::Identity()}), std::invalid_argument);
+  EXPECT_EQ(core.session().Estimate().pose.x_m, x);
+}
+
+TEST(LocalizerCore, StateWaitsForScansAfterEveryRestartGoesStaleAndReportsErrors) {
+  TextAmclNodeOptions o = AtAPose();
+  o.scan_timeout_s = 2.0;
+  LocalizerCore core(o, nullptr);
+  ASSERT_TRUE(core.UseMaps(Room("", true), "/map").used);
+  EXPECT_EQ(core.State(10.0), "waiting_for_scan");
+  core.ScanTaken(10.0);
+  const std::string filter_state = StateText(core.session().Status().state, core.session().Status().lost_reason);
+  EXPECT_EQ(core.State(11.0), filter_state);
+  EXPECT_EQ(core.State(12.5), "waiting_for_scan") << "no scan for 2.5 s";
+  core.ScanTaken(12.5);
+  core.Failed("std::bad_alloc");
+  EXPECT_EQ(core.State(12.6), "error: std::bad_alloc");
+  EXPECT_EQ(core.Health(12.6).error, "std::bad_alloc");
+  core.ScanTaken(12.7);
+  EXPECT_EQ(core.State(12.8), filter_state) << "the next scan taken clears the error";
+  core.InitialPose(StartPose{{2.0, 1.0, 0.0}, Eigen::Matrix3d::Identity() * 1e-4});
+  EXPECT_EQ(core.State(12.8), "waiting_for_scan") << "a restart publishes no estimate until a scan";
+  EXPECT_TRUE(core.GlobalLocalization());
+  EXPECT_EQ(core.State(12.9), "waiting_for_scan");
 }
 
 }  // namespace

@@ -3,7 +3,9 @@
 // LoadTextAmclOptions against this node's parameters, amcl's interface (services, latched topics, the text
 // landmark markers), that bad input is reported naming the topic while the node keeps running, global
 // localization (after global_localization and a drive along the corridor, ~state says converged and
-// amcl_pose and tf map -> base_link agree with base_pose_ground_truth), then ~save_pose_rate and set_map.
+// amcl_pose and tf map -> base_link agree with base_pose_ground_truth), then ~save_pose_rate and set_map
+// (a refused map changes nothing: amcl_pose flows on, ~state and the latched map stay), ~state and
+// /diagnostics, and a second localizer (/late, no map yet) that queues global_localization until its map.
 // Every wait is on a condition with a wall-clock timeout. The cases run in order: the drive starts in the
 // global localization case.
 #include <algorithm>
@@ -15,6 +17,7 @@
 #include <set>
 #include <string>
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PoseArray.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <nav_msgs/OccupancyGrid.h>
@@ -127,6 +130,8 @@ TEST(LoadTextAmclOptions, RejectsOutOfRangeMistypedAndUnsupportedValuesNamingThe
       {"selective_resampling", XmlRpc::XmlRpcValue(true)},
       {"recovery_alpha_fast", XmlRpc::XmlRpcValue(0.0001)},  // < recovery_alpha_slow (0.001)
       {"text_max_view_angle_rad", XmlRpc::XmlRpcValue(2.0)},
+      {"max_particles", XmlRpc::XmlRpcValue(1000000000)},  // above limits::kMaxParticles (was std::bad_alloc)
+      {"scan_timeout_s", XmlRpc::XmlRpcValue("soon")},
   };
   for (const auto& c : cases) {
     nh.setParam(c.first, c.second);
@@ -185,9 +190,18 @@ TEST(TextAmclNodelet, ReportsBadInputNamingTheTopicAndKeepsRunning) {
   scan.range_min = 0.15f;
   scan.range_max = 12.0f;
   scan.ranges.assign(360, 1.0f);
+  scan.angle_max = static_cast<float>(-M_PI + 359 * (2 * M_PI / 360));
   EXPECT_TRUE(WaitFor([] { return listener->Warned("/scan", "angle_increment must be finite"); }, 30.0,
                       [&] { scan_pub.publish(scan); }));
   scan.angle_increment = 2 * M_PI / 360;
+  // 10 ranges whose angles say a full turn of 1-degree beams (issue 18): refused naming the topic.
+  sensor_msgs::LaserScan short_scan = scan;
+  short_scan.ranges.resize(10);
+  EXPECT_TRUE(WaitFor([] { return listener->Warned("/scan: 10 ranges, but angle_min", "make 360 beams"); }, 30.0,
+                      [&] {
+                        short_scan.header.stamp = ros::Time::now();
+                        scan_pub.publish(short_scan);
+                      }));
   // Older than the simulator's latest scan (10 Hz) but within tf's cache, so only the order is wrong (a stamp
   // before the nodelet's tf listener started gave "no tf" on a loaded machine instead).
   EXPECT_TRUE(WaitFor([] { return listener->Warned("/scan", "time went backwards"); }, 30.0, [&] {
@@ -238,7 +252,9 @@ TEST(TextAmclNodelet, GlobalLocalizationConvergesOnTheTruePoseWhileFollowingTheC
   EXPECT_TRUE(WaitFor([&] { return listener->cloud->poses.size() == 5000u && spread_m() > 12.0; }))
       << "global localization spreads max_particles along the 15.5 m corridor; last cloud: "
       << listener->cloud->poses.size() << " poses over " << spread_m() << " m";
-  EXPECT_NE(listener->state, "converged");
+  // ~state leaves converged (the restart's waiting_for_scan, then tracking: no plate read yet). Waited for:
+  // the state arrives on its own connection, possibly after the cloud.
+  ASSERT_TRUE(WaitFor([] { return listener->state != "converged"; })) << "still converged after global_localization";
 
   ros::ServiceClient enable = nh.serviceClient<std_srvs::SetBool>("corridor_follower/enable");
   ASSERT_TRUE(enable.waitForExistence(ros::Duration(30.0)));
@@ -314,6 +330,35 @@ TEST(TextAmclNodelet, SavesTheEstimateAsTheInitialPoseAndSetMapRestartsAtTheGive
   EXPECT_FALSE(set_map.response.success) << "a map whose data does not match its size is refused";
   EXPECT_TRUE(WaitFor([] { return listener->Warned("/set_map", "data has 3 cells"); }));
 
+  // Issue 18: an all-occupied 100 x 100 map used to throw inside the filter and end localization. Now it is
+  // refused before anything changes: success false, the reason logged, amcl_pose flowing, ~state and the
+  // latched map as they were.
+  const std::string state_before = listener->state;
+  listener->states_seen.clear();
+  const unsigned width_before = map->info.width;
+  set_map.request.map = *map;
+  set_map.request.map.info.width = set_map.request.map.info.height = 100;
+  set_map.request.map.data.assign(100 * 100, 100);
+  set_map.request.initial_pose.header.frame_id = "map";
+  set_map.request.initial_pose.pose.pose = listener->truth.back()->pose.pose;
+  ASSERT_TRUE(ros::service::call("set_map", set_map));
+  EXPECT_FALSE(set_map.response.success) << "a map without a free cell is refused";
+  EXPECT_TRUE(WaitFor([] { return listener->Warned("/set_map", "no free cell: all 10000 cells"); }));
+  EXPECT_TRUE(WaitFor([] { return listener->Warned("the map in force", "is kept"); }));
+  EXPECT_EQ(listener->state, state_before);
+  const int poses_after_refusal = listener->poses;
+  EXPECT_TRUE(WaitFor([&] { return listener->poses > poses_after_refusal + 3; }, 60.0))
+      << "amcl_pose stopped after a refused set_map";
+  for (const std::string& seen : listener->states_seen) {  // no restart, no error since the call
+    EXPECT_TRUE(seen == "converged" || seen == "tracking") << seen;
+  }
+  nav_msgs::OccupancyGrid::ConstPtr map_now;
+  ros::Subscriber map_again =
+      nh.subscribe<nav_msgs::OccupancyGrid>("map", 1, [&](const nav_msgs::OccupancyGrid::ConstPtr& m) { map_now = m; });
+  ASSERT_TRUE(WaitFor([&] { return map_now != nullptr; }));
+  EXPECT_EQ(map_now->info.width, width_before) << "the latched map is still the one in force";
+  set_map.request.initial_pose = geometry_msgs::PoseWithCovarianceStamped();
+
   const auto truth = listener->truth.back();
   set_map.request.map = *map;
   set_map.request.initial_pose.header.frame_id = "map";
@@ -334,6 +379,89 @@ TEST(TextAmclNodelet, SavesTheEstimateAsTheInitialPoseAndSetMapRestartsAtTheGive
   EXPECT_TRUE(WaitFor([&] {
     return listener->clouds > clouds_before && listener->cloud->poses.size() == 5000u && near_truth() > 4500;
   })) << listener->cloud->poses.size() << " poses, " << near_truth() << " within 0.5 m of the given pose";
+}
+
+// /diagnostics: the localizer's entry says what ~state says, with the scan rate and the map in force.
+TEST(TextAmclNodelet, PublishesItsHealthOnDiagnostics) {
+  ros::NodeHandle nh;
+  diagnostic_msgs::DiagnosticStatus status;
+  bool seen = false;
+  ros::Subscriber sub = nh.subscribe<diagnostic_msgs::DiagnosticArray>(
+      "/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& m) {
+        for (const auto& s : m->status) {
+          if (s.name == "/amcl: localization") {
+            status = s;
+            seen = true;
+          }
+        }
+      });
+  const auto value = [&status](const std::string& key) {
+    for (const auto& kv : status.values) {
+      if (kv.key == key) return kv.value;
+    }
+    return std::string("(missing)");
+  };
+  ASSERT_TRUE(WaitFor([&] {
+    return seen && value("scan rate (Hz)") != "0.0" && status.message.rfind(listener->state, 0) == 0;
+  }, 30.0)) << "no /amcl diagnostics, or they disagree with ~state '" << listener->state << "': " << status.message;
+  EXPECT_NE(value("map in force").find(" x "), std::string::npos) << value("map in force");
+  EXPECT_GT(std::stod(value("scan rate (Hz)")), 1.0);
+  EXPECT_NE(value("odometry tf age (s)"), "no transform");
+  EXPECT_EQ(value("last error"), "none");
+}
+
+// Issue 19 (an amcl habit): global_localization before the map has arrived is queued, and the first map
+// starts with global localization (not at ~initial_pose_*), said in the log and on /diagnostics.
+TEST(TextAmclNodelet, GlobalLocalizationBeforeAMapIsQueuedUntilOneArrives) {
+  ros::NodeHandle nh;
+  std::string state;
+  std::set<std::string> states;
+  geometry_msgs::PoseArray::ConstPtr cloud;
+  bool queued_on_diagnostics = false;
+  ros::Subscriber subs[3] = {
+      nh.subscribe<std_msgs::String>("late/late_amcl/state", 10,
+                                     [&](const std_msgs::String::ConstPtr& m) {
+                                       state = m->data;
+                                       states.insert(m->data);
+                                     }),
+      nh.subscribe<geometry_msgs::PoseArray>("late/particlecloud", 2,
+                                             [&](const geometry_msgs::PoseArray::ConstPtr& m) { cloud = m; }),
+      nh.subscribe<diagnostic_msgs::DiagnosticArray>(
+          "/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& m) {
+            for (const auto& s : m->status) {
+              if (s.name == "/late/late_amcl: localization" && s.message.find("queued") != std::string::npos) {
+                queued_on_diagnostics = true;
+              }
+            }
+          })};
+  ASSERT_TRUE(ros::service::waitForService("late/global_localization", ros::Duration(60.0)));
+  ASSERT_TRUE(WaitFor([&] { return state == "waiting_for_map"; })) << "state '" << state << "'";
+  std_srvs::Empty empty;
+  ASSERT_TRUE(ros::service::call("late/global_localization", empty));
+  EXPECT_TRUE(WaitFor([] { return listener->Warned("/late/global_localization", "queued"); }));
+  EXPECT_TRUE(WaitFor([&] { return queued_on_diagnostics; })) << "/diagnostics does not say it is queued";
+  EXPECT_EQ(state, "waiting_for_map");
+
+  // The map arrives (the corridor /amcl latches): the filter starts spread over it.
+  nav_msgs::OccupancyGrid::ConstPtr map;
+  ros::Subscriber map_sub =
+      nh.subscribe<nav_msgs::OccupancyGrid>("map", 1, [&](const nav_msgs::OccupancyGrid::ConstPtr& m) { map = m; });
+  ASSERT_TRUE(WaitFor([&] { return map != nullptr; }));
+  ros::Publisher late_map = nh.advertise<nav_msgs::OccupancyGrid>("late/map", 1, /*latch=*/true);
+  late_map.publish(*map);
+  const auto spread_m = [&] {
+    double lo = 1e9, hi = -1e9;
+    for (const auto& p : cloud->poses) {
+      lo = std::min(lo, p.position.x);
+      hi = std::max(hi, p.position.x);
+    }
+    return hi - lo;
+  };
+  EXPECT_TRUE(WaitFor([&] { return cloud && cloud->poses.size() == 500u && spread_m() > 12.0; }, 60.0))
+      << "the queued global localization did not spread the particles over the corridor";
+  // No scan reaches /late: it says so, and never converged.
+  EXPECT_TRUE(WaitFor([&] { return state == "waiting_for_scan"; })) << "state '" << state << "'";
+  EXPECT_EQ(states.count("converged"), 0u);
 }
 
 }  // namespace

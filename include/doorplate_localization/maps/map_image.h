@@ -16,7 +16,8 @@ struct MapImage {
 };
 
 // Reads a binary (P5) or ASCII (P2) PGM with maxval 1..255 (values rescaled to 0..255), or an 8-bit
-// image OpenCV decodes (PNG, ...). Throws MapFileError (map_io.h) naming the file and what is wrong.
+// image OpenCV decodes (PNG, ...). Throws MapFileError (map_io.h) naming the file and what is wrong; a PGM
+// or PNG whose header states more than limits::kMaxMapCells pixels is refused before the file is read whole.
 MapImage ReadMapImage(const std::string& path);
 
 // Decodes PGM bytes; `source` names the data in errors. Throws MapFileError.

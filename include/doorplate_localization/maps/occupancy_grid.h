@@ -22,7 +22,8 @@ struct OccupancyGrid {
   std::vector<std::int8_t> cells;  // row-major, index = y * width + x
 
   OccupancyGrid() = default;
-  // A grid of `width` × `height` cells, all `fill`.
+  // A grid of `width` × `height` cells, all `fill`. Throws std::invalid_argument for a negative size, a
+  // resolution that is not finite and > 0, or more cells than limits::kMaxMapCells (before allocating).
   OccupancyGrid(int width_cells, int height_cells, double resolution, Pose2D origin_pose,
                 std::int8_t fill = kUnknown);
 

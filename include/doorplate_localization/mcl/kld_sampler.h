@@ -26,7 +26,8 @@ struct KldSamplerOptions {
 
 class KldSampler {
  public:
-  // Throws std::invalid_argument naming the field of a bad option.
+  // Throws std::invalid_argument naming the field of a bad option (max_particles above
+  // limits::kMaxParticles too, before anything is reserved).
   explicit KldSampler(const KldSamplerOptions& options);
 
   // Fox's bound for k occupied bins, unclamped and not rounded; 0 for k <= 1.

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "doorplate_localization/common/geometry2d.h"
@@ -24,7 +25,8 @@ struct LocalizationGridOptions {
 
 class LocalizationGrid {
  public:
-  // Throws std::invalid_argument naming the field of an unusable grid or options.
+  // Throws std::invalid_argument naming the field of an unusable grid or options: cells not width x height,
+  // more than limits::kMaxMapCells, a resolution or origin outside limits.h's bounds.
   explicit LocalizationGrid(const OccupancyGrid& grid, const LocalizationGridOptions& options = {});
 
   int width() const { return width_; }
@@ -62,5 +64,9 @@ class LocalizationGrid {
   std::vector<std::uint8_t> states_;  // CellState per cell
   std::vector<int> free_cells_;
 };
+
+// "" if `grid` has a free cell, else the problem ("no free cell: all 10000 cells are occupied or unknown"):
+// a filter on such a grid cannot place particles by GlobalLocalization or recovery.
+std::string NoFreeCellProblem(const LocalizationGrid& grid);
 
 }  // namespace doorplate_localization

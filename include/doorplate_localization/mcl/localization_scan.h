@@ -22,7 +22,8 @@ struct LocalizationScan {
   Pose2D laser_pose;                 // laser frame in base_link (the mounting pose)
 };
 
-// Returns "" if the scan's geometry is usable, else what is wrong ("LocalizationScan.ranges_m: empty", ...).
+// Returns "" if the scan's geometry is usable, else what is wrong ("LocalizationScan.ranges_m: empty", more
+// than limits::kMaxScanBeams ranges, ...).
 // Individual non-finite or out-of-range ranges do not make a scan unusable; models skip them.
 std::string ValidateLocalizationScan(const LocalizationScan& scan);
 

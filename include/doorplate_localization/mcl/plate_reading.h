@@ -21,7 +21,8 @@ struct PlateReading {
 };
 
 // Returns "" if the reading is usable, else what is wrong, naming the field ("PlateReading.confidence:
-// must be in [0, 1], got 1.5"). A left camera must report a bearing in (0, pi), a right one in (-pi, 0).
+// must be in [0, 1], got 1.5"). A text longer than limits::kMaxPlateTextBytes is refused (the message
+// gives its length, never the text). A left camera must report a bearing in (0, pi), a right one in (-pi, 0).
 std::string ValidatePlateReading(const PlateReading& reading);
 
 // Canonical form of a plate text for matching: CanonicalRoomId (common/room_id.h): ASCII letters

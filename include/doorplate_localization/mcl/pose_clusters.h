@@ -34,6 +34,10 @@ ClusterResult ClusterParticles(const std::vector<Particle>& particles, const Pos
 // Weighted statistics of a subset of particles (indexes), as for one cluster.
 PoseCluster ParticleStatistics(const std::vector<Particle>& particles, const std::vector<int>& indexes);
 
+// The same statistics over the whole set (every particle, its own weight): amcl's overall filter
+// covariance, published on amcl_pose.
+PoseCluster SetStatistics(const std::vector<Particle>& particles);
+
 // A cluster's position spread: the square root of the largest eigenvalue of its x/y covariance (m),
 // and its heading spread sqrt(covariance(2, 2)) (rad).
 double PositionStddev(const PoseCluster& cluster);

@@ -100,9 +100,16 @@ struct TextAmclModels {
   std::shared_ptr<PlatePoseSampler> plate_sampler;
 };
 
+// The estimate as amcl publishes it on amcl_pose: the heaviest cluster's mean with the covariance of the
+// WHOLE particle set (amcl_node.cpp: "report the overall filter covariance, rather than the covariance for
+// the highest-weight cluster"), so a second hypothesis far away shows as a large covariance, which users
+// gate on. The cluster's own covariance (what ~state's converged rule reads) is kept beside it.
 struct PoseEstimate {
   Pose2D pose;                                         // mean of the heaviest cluster
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  // (x_m, y_m, theta_rad), see pose_clusters.h
+  // (x_m, y_m, theta_rad) of all particles about their weighted mean (SetStatistics, pose_clusters.h):
+  // weighted x/y block, heading -2 ln R, x/y-heading terms 0.
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d cluster_covariance = Eigen::Matrix3d::Zero();  // the same over the heaviest cluster only
   double cluster_weight = 0.0;                         // share of the weight in that cluster
   int cluster_count = 0;
 };
@@ -135,8 +142,9 @@ struct TextAmclStatus {
 
 class TextAmcl {
  public:
-  // Throws std::invalid_argument naming the field of a bad option or a missing model. The filter starts
-  // empty: call Initialize or GlobalLocalization.
+  // Throws std::invalid_argument naming the field of a bad option, a missing model or a grid without a
+  // free cell (NoFreeCellProblem: global localization and random particles need free space), so that
+  // neither can fail later. The filter starts empty: call Initialize or GlobalLocalization.
   TextAmcl(const TextAmclOptions& options, TextAmclModels models);
 
   // max_particles particles drawn from N(mean, covariance) (x_m, y_m, theta_rad; positive
@@ -164,7 +172,8 @@ class TextAmcl {
   void ForceUpdate() { force_update_ = true; }
 
   bool initialized() const { return !particles_.empty(); }
-  // The heaviest cluster's mean and covariance. Throws std::logic_error before initialization.
+  // The heaviest cluster's mean, the whole set's covariance and the cluster's (PoseEstimate). Throws
+  // std::logic_error before initialization.
   PoseEstimate Estimate() const;
   LocalizationState State() const { return state_; }
   TextAmclStatus Status() const;

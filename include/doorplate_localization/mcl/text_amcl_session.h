@@ -152,7 +152,8 @@ class TextAmclSession {
   Pose2D PoseAtOdometry(const Pose2D& base_in_odom) const;
   const std::vector<Particle>& particles() const { return filter_->particles(); }
   const TextAmclSessionCounters& counters() const { return counters_; }
-  const std::set<std::string>& unknown_rooms() const { return unknown_rooms_; }  // canonical room ids
+  // Canonical ids of the unknown rooms read (at most limits::kMaxRememberedUnknownRooms).
+  const std::set<std::string>& unknown_rooms() const { return unknown_rooms_; }
   bool has_text_map() const { return matcher_ != nullptr; }
   const TextAmclSessionOptions& options() const { return options_; }
 

@@ -42,8 +42,8 @@ struct TextAmclSetupOptions {
 };
 
 // The filter, not yet initialized (call Initialize or GlobalLocalization). `text_map` may be null
-// (laser only). Throws std::invalid_argument naming the field of a bad option, an unusable map or an
-// empty text map with use_text.
+// (laser only). Throws std::invalid_argument naming the field of a bad option, an unusable map (beyond
+// limits.h's bounds, or without a free cell: "map: no free cell: ...") or an empty text map with use_text.
 std::unique_ptr<TextAmcl> MakeTextAmcl(const TextAmclSetupOptions& options, const OccupancyGrid& map,
                                        std::shared_ptr<const TextMap> text_map);
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <diagnostic_msgs/DiagnosticStatus.h>
 #include <geometry_msgs/PoseArray.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <ros/time.h>
@@ -50,19 +51,48 @@ std::string FromInitialPoseMsg(const geometry_msgs::PoseWithCovarianceStamped& m
                                Pose2D* mean, Eigen::Matrix3d* covariance);
 
 // --- outputs ---
-// amcl_pose: the estimate with its covariance placed in the 6x6 (x, y, z, roll, pitch, yaw) matrix at
-// x/y/yaw (rows/columns 0, 1, 5), everything else 0 (as amcl).
+// amcl_pose: the estimate (the heaviest cluster's mean) with estimate.covariance, the WHOLE particle set's
+// (as amcl publishes it, text_amcl.h's PoseEstimate), placed in the 6x6 (x, y, z, roll, pitch, yaw) matrix
+// at x/y/yaw (rows/columns 0, 1, 5), everything else 0 (as amcl).
 geometry_msgs::PoseWithCovarianceStamped ToAmclPoseMsg(const PoseEstimate& estimate, const std::string& frame_id,
                                                        const ros::Time& stamp);
 // particlecloud: every particle's pose (weights are not carried, as amcl).
 geometry_msgs::PoseArray ToParticleCloudMsg(const std::vector<Particle>& particles, const std::string& frame_id,
                                             const ros::Time& stamp);
-// ~state: "tracking", "converged" or "lost: <reason>" (likelihood_collapse | plate_contradiction).
+// The filter's state: "tracking", "converged" or "lost: <reason>" (likelihood_collapse | plate_contradiction).
 std::string StateText(LocalizationState state, LostReason reason);
+
+// What TextAmclNodelet knows about its own condition: for ~state (NodeStateText) and /diagnostics.
+struct LocalizerHealth {
+  bool map_in_force = false;
+  std::string map;                          // the map in force: "<source>: W x H at R m"
+  bool global_localization_queued = false;  // requested before any map was in force
+  std::string error;                        // the last unexpected exception of the session ("" none)
+  double scan_age_s = -1.0;                 // ROS time since the last scan the session took; < 0: none since the (re)start
+  double scan_timeout_s = 0.0;              // ~scan_timeout_s; <= 0: scans are never stale
+  double scan_rate_hz = 0.0;                // scans taken per second over the last diagnostics period
+  double tf_age_s = -1.0;                   // age of the latest odom -> base transform; < 0: none
+  TextAmclStatus status;                    // the filter's (BuildingSession::Status)
+  long long plates_weighed = 0, plates_used = 0, unknown_room_readings = 0;  // the current floor's session
+};
+
+// ~state, honest about what is published: "waiting_for_map" (no map in force), "error: <what>" (the
+// session threw; cleared by the next scan it takes), "waiting_for_scan" (no scan taken since the filter
+// was (re)started, or none for scan_timeout_s: no estimate is being published), else StateText of the
+// filter. So "converged" is only said while estimates are flowing.
+std::string NodeStateText(const LocalizerHealth& health);
+
+// /diagnostics entry (diagnostic_msgs, rqt_runtime_monitor): level OK for tracking / converged, WARN for
+// waiting_for_map / waiting_for_scan / lost, ERROR for error; message = NodeStateText; values: state, map in
+// force, global localization queued, scan rate, last scan age, odometry tf age, particles, best cluster
+// weight, position stddev, plates weighed / used, unknown room readings, last error.
+diagnostic_msgs::DiagnosticStatus ToDiagnosticStatus(const LocalizerHealth& health, const std::string& name,
+                                                     const std::string& hardware_id);
 
 // One line on what became of a plate reading (TextAmclSession's PlateReadingOutcome), for the log: "plate '214' at
 // 1.571 rad, range 1.20 m: explained 3.10 (best cluster 4.00), 0 reseeded", "plate '214' not used: <why>",
-// "room '999' is not in the text map", "plate '214' at 12.300 s ignored (stale): <detail>".
+// "room '999' is not in the text map", "plate '214' at 12.300 s ignored (stale): <detail>". The text is
+// quoted at most limits::kMaxLoggedTextBytes long (a 1 MB detection text must not reach the log whole).
 std::string DescribePlateOutcome(const PlateReadingOutcome& outcome);
 
 }  // namespace doorplate_localization

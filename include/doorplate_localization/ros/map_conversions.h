@@ -17,7 +17,9 @@ namespace doorplate_localization {
 
 // Returns "" and fills *grid from a nav_msgs/OccupancyGrid (values -1 unknown, 0..100; others are read as
 // unknown), else what is wrong ("info.resolution must be finite and > 0, got 0", "data has 6 cells, info
-// says 3 x 4 = 12"); *grid is left alone on error. The origin's yaw is kept; its z, roll and pitch are
+// says 3 x 4 = 12", a size, resolution or origin beyond common/limits.h's bounds: "info.width x info.height:
+// 20000 x 20000 = 4e+08 cells, more than the limit of 100000000 (limits::kMaxMapCells)", checked before
+// anything is allocated); *grid is left alone on error. The origin's yaw is kept; its z, roll and pitch are
 // ignored.
 std::string FromOccupancyGridMsg(const nav_msgs::OccupancyGrid& msg, OccupancyGrid* grid);
 

@@ -8,7 +8,9 @@
 namespace doorplate_localization {
 
 // Returns "" if the scan's geometry is usable, else what is wrong with it ("no ranges", "angle_increment
-// must be finite and non-zero, got nan", ...). Individual NaN/±inf/negative ranges do NOT make a scan
+// must be finite and non-zero, got nan", more than limits::kMaxScanBeams ranges, angles that do not agree
+// with the number of ranges: "10 ranges, but angle_min -3.14159 .. angle_max 3.14159 at increment 0.0174533
+// make 361 beams" (one beam either way is allowed: drivers differ on whether angle_max is the last beam's)). Individual NaN/±inf/negative ranges do NOT make a scan
 // unusable: consumers skip those beams (REP-117).
 std::string ValidateScan(const sensor_msgs::LaserScan& scan);
 
