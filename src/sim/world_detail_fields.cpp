@@ -1,5 +1,7 @@
 #include "world_detail_fields.h"
 
+#include "doorplate_localization/common/limits.h"
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -10,6 +12,19 @@
 #include "doorplate_localization/sim/clutter_presets.h"
 
 namespace doorplate_localization {
+
+double ParseCoordinateM(const YamlField& f) {
+  const double v = f.AsDouble();
+  const std::string problem = limits::CheckCoordinate(v);
+  if (!problem.empty()) f.Fail(problem);
+  return v;
+}
+
+Vec2 ParsePointM(const YamlField& f) {
+  const std::vector<YamlField> items = f.Items();
+  if (items.size() != 2) f.Fail("must be a list of 2 numbers, got " + std::to_string(items.size()));
+  return {ParseCoordinateM(items[0]), ParseCoordinateM(items[1])};
+}
 namespace {
 
 constexpr double kBumperHeightM = 0.3;  // as the simulator's: lower clutter stops the robot
@@ -205,8 +220,7 @@ void ParseGlass(const YamlField& f, const std::map<std::string, int>& walls, Wor
     if (f.Has("offset_m") || f.Has("width_m") || f.Has("room_depth_m") || f.Has("room_width_m")) {
       f.Fail("'offset_m', 'width_m', 'room_depth_m' and 'room_width_m' need 'wall'");
     }
-    const auto a = f.Child("from").AsDoubles(2), b = f.Child("to").AsDoubles(2);
-    g.segment = {{a[0], a[1]}, {b[0], b[1]}};
+    g.segment = {ParsePointM(f.Child("from")), ParsePointM(f.Child("to"))};
   }
   if (!(g.segment.Length() > 2 * g.frame_width_m + 0.01)) f.Fail("glass must be wider than its two frame posts + 1 cm");
   world->glass.push_back(g);
@@ -252,7 +266,8 @@ void ParseClutter(const YamlField& f, const std::map<std::string, int>& walls, W
     }
     double yaw_deg = 0.0;
     f.Get("yaw_deg", &yaw_deg);
-    item.pose = {f.Child("x_m").AsDouble(), f.Child("y_m").AsDouble(), NormalizeAngle(yaw_deg * M_PI / 180.0)};
+    item.pose = {ParseCoordinateM(f.Child("x_m")), ParseCoordinateM(f.Child("y_m")),
+                 NormalizeAngle(yaw_deg * M_PI / 180.0)};
   }
   world->clutter.push_back(item);
 }
@@ -269,8 +284,7 @@ void ParsePerson(const YamlField& f, World* world) {
   const std::vector<YamlField> points = f.Child("waypoints").Items();
   if (points.size() < 2) f.Child("waypoints").Fail("needs at least 2 points");
   for (const YamlField& point : points) {
-    const auto xy = point.AsDoubles(2);
-    p.waypoints.push_back({xy[0], xy[1]});
+    p.waypoints.push_back(ParsePointM(point));
     if (p.waypoints.size() > 1 && Norm(p.waypoints.back() - p.waypoints[p.waypoints.size() - 2]) < 0.01) {
       point.Fail("must be at least 1 cm from the previous waypoint");
     }

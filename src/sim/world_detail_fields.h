@@ -12,6 +12,12 @@
 
 namespace doorplate_localization {
 
+// A world position: `f` as [x, y] metres, each within ±limits::kMaxCoordinateM (a world is a building, and
+// coordinates like 1e300 would overflow the grids made from it); fails naming the field and the limit.
+Vec2 ParsePointM(const YamlField& f);
+// A single world coordinate in metres (`start.x_m`, a clutter item's `x_m`), checked the same way.
+double ParseCoordinateM(const YamlField& f);
+
 // Door keys `recess_m`, `frame_width_m`, `frame_depth_m`, `frame_color` (doors and door_rows).
 extern const std::set<std::string> kDoorDetailKeys;
 void ParseDoorDetail(const YamlField& f, Door* door);

@@ -61,10 +61,9 @@ std::string ParseImagePath(const YamlField& field, const std::string& source_nam
 void ParseLightZone(const YamlField& f, World* world) {
   f.RequireOnlyKeys({"min", "max", "gain", "gain_at_max", "axis", "edge_m"});
   LightZone zone;
-  const auto lo = f.Child("min").AsDoubles(2), hi = f.Child("max").AsDoubles(2);
-  zone.min = {lo[0], lo[1]};
-  zone.max = {hi[0], hi[1]};
-  if (!(hi[0] >= lo[0] && hi[1] >= lo[1])) f.Child("max").Fail("must be >= min in x and y");
+  zone.min = ParsePointM(f.Child("min"));
+  zone.max = ParsePointM(f.Child("max"));
+  if (!(zone.max.x >= zone.min.x && zone.max.y >= zone.min.y)) f.Child("max").Fail("must be >= min in x and y");
   zone.gain = f.NonNegative("gain", zone.gain);
   zone.gain_at_max = f.NonNegative("gain_at_max", zone.gain);
   if (zone.gain > 10.0 || zone.gain_at_max > 10.0) f.Fail("gain and gain_at_max must be in [0, 10]");
@@ -85,8 +84,7 @@ void ParseCorridor(const YamlField& f, World* world) {
   for (const CorridorSpec& other : world->corridors) {
     if (other.id == corridor.id) f.Child("id").Fail("duplicate corridor id '" + corridor.id + "'");
   }
-  const auto a = f.Child("from").AsDoubles(2), b = f.Child("to").AsDoubles(2);
-  corridor.centreline = {{a[0], a[1]}, {b[0], b[1]}};
+  corridor.centreline = {ParsePointM(f.Child("from")), ParsePointM(f.Child("to"))};
   if (corridor.centreline.Length() < 1e-3) f.Child("to").Fail("must be at least 1 mm from 'from'");
   corridor.width_m = f.Child("width_m").AsDouble();
   if (!(corridor.width_m > 0.0)) f.Child("width_m").Fail("must be > 0, got " + std::to_string(corridor.width_m));
@@ -98,8 +96,7 @@ void ParseWall(const YamlField& f, World* world, Indexes* idx) {
   Wall wall;
   wall.id = f.Child("id").AsString();
   if (idx->walls.count(wall.id)) f.Child("id").Fail("duplicate wall id '" + wall.id + "'");
-  const auto a = f.Child("from").AsDoubles(2), b = f.Child("to").AsDoubles(2);
-  wall.segment = {{a[0], a[1]}, {b[0], b[1]}};
+  wall.segment = {ParsePointM(f.Child("from")), ParsePointM(f.Child("to"))};
   if (wall.segment.Length() < 1e-3) f.Fail("wall 'from' and 'to' must be at least 1 mm apart");
   const std::string side = f.Child("corridor_side").AsString();
   if (side != "left" && side != "right") f.Child("corridor_side").Fail("must be 'left' or 'right' of from→to");
@@ -300,8 +297,8 @@ void ParseRobot(const YamlField& f, World* world) {
   f.RequireOnlyKeys({"start", "radius_m"});
   const YamlField start = f.Child("start");
   start.RequireOnlyKeys({"x_m", "y_m", "theta_deg"});
-  world->start_pose.x_m = start.Child("x_m").AsDouble();
-  world->start_pose.y_m = start.Child("y_m").AsDouble();
+  world->start_pose.x_m = ParseCoordinateM(start.Child("x_m"));
+  world->start_pose.y_m = ParseCoordinateM(start.Child("y_m"));
   double theta_deg = 0.0;
   start.Get("theta_deg", &theta_deg);
   world->start_pose.theta_rad = NormalizeAngle(theta_deg * M_PI / 180.0);

@@ -213,6 +213,14 @@ TEST(ParseWorldYaml, WallsMayMeetAtTheirEndsButNotCrossOrOverlap) {
   EXPECT_NO_THROW(ParseWorldYaml(with("  - {id: more, from: [10, 0], to: [12, 0], corridor_side: left}\n"), "w.yaml"));
 }
 
+TEST(ParseWorldYaml, AbsurdCoordinatesAreRefusedNamingTheFieldAndTheLimit) {
+  EXPECT_EQ(ErrorOf([] { ParseWorldYaml(Replace(kMinimal, "x_m: 1,", "x_m: 1e300,"), "w.yaml"); }),
+            "w.yaml: robot.start.x_m: must be finite and within +-1e+06 m (limits::kMaxCoordinateM), got 1e+300");
+  EXPECT_NE(ErrorOf([] { ParseWorldYaml(Replace(kMinimal, "to: [10, 0]", "to: [1e7, 0]"), "w.yaml"); })
+                .find("w.yaml: walls[0].to[0]: must be finite and within +-1e+06 m"),
+            std::string::npos);
+}
+
 TEST(ParseWorldYaml, SensorOverridesAreValidated) {
   const std::string with_sensors = std::string(kMinimal) + "sensors: {laser: {num_beams: 720, max_range_m: 8}}\n";
   const World world = ParseWorldYaml(with_sensors, "w.yaml");
