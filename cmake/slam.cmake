@@ -3,6 +3,7 @@
 add_library(doorplate_slam
   src/slam/carmen_reader.cpp
   src/slam/correlative_search.cpp
+  src/slam/mapping_session.cpp
   src/slam/motion_model.cpp
   src/slam/pose_graph.cpp
   src/slam/rbpf_slam.cpp
@@ -26,7 +27,7 @@ target_link_libraries(doorplate_map_log doorplate_slam doorplate_maps opencv_cor
 install(TARGETS doorplate_map_log RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(name carmen_reader correlative_search tiled_grid scan_matcher motion_model trajectory_tree rbpf_slam rbpf_slam_options text_slam pose_graph scan_icp slam_back_end)
+  foreach(name carmen_reader correlative_search tiled_grid scan_matcher motion_model trajectory_tree rbpf_slam rbpf_slam_options text_slam mapping_session pose_graph scan_icp slam_back_end)
     doorplate_add_core_test(${name}_test test/slam/${name}_test.cpp doorplate_slam)
   endforeach()
 endif()

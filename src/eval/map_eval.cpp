@@ -12,6 +12,7 @@
 
 #include "doorplate_localization/sim/ground_truth_maps.h"
 #include "doorplate_localization/sim/simulator.h"
+#include "doorplate_localization/slam/mapping_session.h"
 #include "eval_args.h"
 
 namespace doorplate_localization {
@@ -75,9 +76,10 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
   sim_options.seed = PassSeed(options.seed, 0);
   Simulator sim(world, sim_options);
   const World& sim_world = sim.world();
-  TextSlamOptions slam_options = options.slam;
-  slam_options.slam.seed = PassSeed(options.seed, 1);
-  TextSlam slam(slam_options);
+  MappingSessionOptions session_options;  // every scan to the filter; the back end solved once, at the end
+  session_options.slam = options.slam;
+  session_options.slam.slam.seed = PassSeed(options.seed, 1);
+  MappingSession session(session_options);
   CorridorSweepOptions sweep_options = options.sweep;
   sweep_options.follower.cruise_speed_mps = options.speed_mps;
   CorridorSweep sweep(sweep_options);
@@ -120,7 +122,7 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
         first = false;
       }
       const double t0 = ThreadCpuSeconds();
-      if (slam.AddScan(ToRangeScan(scan, sim_world.sensors.laser), sim.odom_pose(), result.scans)) {
+      if (session.AddScan(sim.time_s(), sim.odom_pose(), ToRangeScan(scan, sim_world.sensors.laser)).scan_processed) {
         ++result.scans_processed;
         result.true_trajectory.push_back(result.world_from_map.Inverse().Compose(sim.true_pose()));
       }
@@ -152,11 +154,12 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
         sighting.text = report.text;
         sighting.confidence = report.confidence;
         sighting.bearing_rad = NormalizeAngle(camera_yaw_rad + report.bearing_rad);
+        // Stamped now, with the odometry now (the report's frame may be older: Table II's convention).
         const double t0 = ThreadCpuSeconds();
-        const TextSlamPlateResult used = slam.AddPlate(sighting, sim.odom_pose());
+        const MappingUpdate update = session.AddPlates(sim.time_s(), sim.odom_pose(), {sighting});
         result.slam_seconds += ThreadCpuSeconds() - t0;
         ++result.plate_reports;
-        if (used.used()) ++result.plate_reports_used;
+        if (update.plates.at(0).result.used()) ++result.plate_reports_used;
       }
     }
     sim.Step();
@@ -164,14 +167,15 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
   result.sweep_done = explore ? explorer.phase() == ExplorePhase::kDone : sweep.phase() == SweepPhase::kDone;
   result.distance_m = sim.distance_travelled_m();
   result.sim_seconds = sim.time_s();
-  result.degenerate_scans = slam.slam().stats().degenerate_scans;
+  result.degenerate_scans = session.slam().slam().stats().degenerate_scans;
 
   // The final map: with the back end on, its solve and the re-rendering happen here, once per run.
   const double map_t0 = ThreadCpuSeconds();
-  result.grid = slam.BuildOccupancyGrid();
-  result.text_map = slam.BuildTextMap();
+  session.Solve();
   result.map_build_seconds = ThreadCpuSeconds() - map_t0;
-  result.trajectory = slam.Trajectory();
+  result.grid = *session.Map();
+  result.text_map = session.GetTextMap();
+  result.trajectory = session.Trajectory();
   double sum2 = 0.0;
   const std::size_t n = std::min(result.trajectory.size(), result.true_trajectory.size());
   for (std::size_t i = 0; i < n; ++i) {
@@ -186,14 +190,14 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
           Norm(result.trajectory[scan].Position() - result.true_trajectory[scan].Position()));
     }
   }
-  if (const std::optional<SlamBackEndResult> back_end = slam.BackEndResult()) {
+  if (const std::optional<SlamBackEndResult>& back_end = session.BackEndResult()) {
     result.odometry_scale = back_end->odometry_scale;
     result.loop_closures = back_end->loop_closures;
   }
   // The estimate at the last processed scan (back end, or best particle) vs the truth now: the odometry
   // since then added.
   const Pose2D estimate_now =
-      result.trajectory.back().Compose(slam.slam().LastProcessedOdometry().Between(sim.odom_pose()));
+      result.trajectory.back().Compose(session.LastProcessedOdometry().Between(sim.odom_pose()));
   result.final_position_error_m =
       Norm(result.world_from_map.Compose(estimate_now).Position() - sim.true_pose().Position());
   std::vector<Segment> walls;

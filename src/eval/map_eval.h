@@ -1,9 +1,11 @@
-// `doorplate_eval map` (paper Table II): one drive in the simulator, every laser scan fed to the SLAM with
-// the odometry pose, and for method rbpf_text every rendered camera frame through the real text
-// extractor, its reports fed to TextSlam::AddPlate. The drive is a corridor sweep (out along one wall,
-// turn, back along the other; CorridorSweep) or, for a whole floor, FloorExplorer's passes (issue 17),
-// which end on re-read plates: the extractor then runs for both methods, so both drive the same way. The result is measured on the output maps (map_measure.h). ROS-free, in-process,
-// deterministic for a seed.
+// `doorplate_eval map` (paper Table II): one drive in the simulator, every laser scan fed to the mapping
+// session (slam/mapping_session.h, the loop the nodelet runs) with the odometry pose, and for method
+// rbpf_text every rendered camera frame through the real text extractor, its reports fed to
+// MappingSession::AddPlates (stamped now, with the odometry now); MappingSession::Solve() once at the end.
+// The drive is a corridor sweep (out along one wall, turn, back along the other; CorridorSweep) or, for a
+// whole floor, FloorExplorer's passes (issue 17), which end on re-read plates: the extractor then runs for
+// both methods, so both drive the same way. The result is measured on the output maps (map_measure.h).
+// ROS-free, in-process, deterministic for a seed.
 #pragma once
 
 #include <cstdint>

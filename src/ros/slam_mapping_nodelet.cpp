@@ -1,13 +1,16 @@
-// SlamMappingNodelet: RBPF SLAM with doorplate text landmarks (slam/text_slam.h) as a thin,
-// gmapping-compatible nodelet.
+// SlamMappingNodelet: RBPF SLAM with doorplate text landmarks as a thin, gmapping-compatible nodelet
+// around the mapping session (slam/mapping_session.h: throttling, stamps, plate ranges, when the back end
+// is solved, map -> odom), the loop `doorplate_eval map` and the offline tools run too. Each callback is
+// validate -> convert (slam_conversions.h) -> session -> publish.
 // Subscribes scan (sensor_msgs/LaserScan; held back by a tf2 message filter until odom -> scan frame is
 // known at its stamp; the laser's mounting comes from tf base_frame -> scan frame) and, with ~use_text,
 // text_detections (doorplate_localization/TextDetectionArray; detections at the image-centre crossing with
 // a text; bearing composed with the camera's optical axis in base_frame from tf).
-// Publishes map (nav_msgs/OccupancyGrid, latched) and map_metadata (latched) every map_update_interval,
-// ~entropy (std_msgs/Float64, gmapping's pose entropy) per processed scan, text_landmarks
-// (visualization_msgs/MarkerArray, latched) when the landmarks change, and tf map -> odom from the best
-// particle every transform_publish_period (future-dated by one period, like gmapping's tf_delay).
+// Publishes map (nav_msgs/OccupancyGrid, latched) and map_metadata (latched) whenever the session solved
+// (every map_update_interval of scan time), ~entropy (std_msgs/Float64, gmapping's pose entropy) per
+// processed scan, text_landmarks (visualization_msgs/MarkerArray, latched) when the landmarks change, and
+// tf map -> odom (the session's) every transform_publish_period (future-dated by one period, like
+// gmapping's tf_delay).
 // Services: dynamic_map (nav_msgs/GetMap, the last published map) and ~save_maps (std_srvs/Trigger:
 // <map_output_dir>/<map_name>.pgm + .yaml (map_server) and .text_map.yaml, atomically); the maps are also
 // saved when the nodelet shuts down. Parameters: slam_mapping_options.h, docs/parameters.md.
@@ -45,6 +48,7 @@
 #include "doorplate_localization/ros/map_conversions.h"
 #include "doorplate_localization/ros/pose_conversions.h"
 #include "doorplate_localization/ros/slam_conversions.h"
+#include "doorplate_localization/slam/mapping_session.h"
 #include "slam_mapping_options.h"
 
 namespace doorplate_localization {
@@ -53,7 +57,7 @@ class SlamMappingNodelet : public nodelet::Nodelet {
  public:
   ~SlamMappingNodelet() override {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!slam_ || !options_.save_on_shutdown || !started_) return;
+    if (!session_ || !options_.save_on_shutdown || !session_->started()) return;
     std::string message;
     SaveMaps(&message);  // the message says whether it worked; printed without ROS (it may be shutting down)
     std::fprintf(stderr, "[slam_mapping] at shutdown: %s\n", message.c_str());
@@ -65,7 +69,7 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     ros::NodeHandle& pnh = getPrivateNodeHandle();
     try {
       options_ = LoadSlamMappingOptions(pnh);
-      slam_ = std::make_unique<TextSlam>(options_.slam);
+      session_ = std::make_unique<MappingSession>(ToMappingSessionOptions(options_));
     } catch (const std::exception& e) {
       NODELET_FATAL("%s", e.what());
       throw;
@@ -106,9 +110,10 @@ class SlamMappingNodelet : public nodelet::Nodelet {
       tf_timer_ = nh.createTimer(ros::Duration(options_.transform_publish_period_s), &SlamMappingNodelet::OnTfTimer,
                                  this);
     }
-    NODELET_INFO("slam mapping: %d particles, linear update %.2f m, angular update %.2f rad, text %s; maps to %s/%s.*",
+    NODELET_INFO("slam mapping: %d particles, linear update %.2f m, angular update %.2f rad, temporal update %.1f s, "
+                 "text %s; maps to %s/%s.*",
                  options_.slam.slam.num_particles, options_.slam.slam.linear_update_m,
-                 options_.slam.slam.angular_update_rad, options_.use_text ? "on" : "off",
+                 options_.slam.slam.angular_update_rad, options_.temporal_update_s, options_.use_text ? "on" : "off",
                  options_.map_output_dir.c_str(), options_.map_name.c_str());
   }
 
@@ -123,16 +128,10 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     }
   }
 
-  // validate → convert → core → publish.
+  // validate -> convert -> session -> publish. Throttling and stamp order are the session's.
   void OnScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (scans_received_++ % options_.throttle_scans != 0) return;
     const ros::Time stamp = msg->header.stamp;
-    if (!last_scan_stamp_.isZero() && stamp <= last_scan_stamp_) {
-      NODELET_WARN_THROTTLE(5.0, "%s: stamp %.3f is not after the previous scan's %.3f (time went backwards?); "
-                            "dropping it", scan_topic_.c_str(), stamp.toSec(), last_scan_stamp_.toSec());
-      return;
-    }
     RangeScan scan;
     Pose2D odom_pose;
     const std::string problem = PrepareSlamScan(*msg, lookup_, frames_, &scan, &odom_pose);
@@ -140,26 +139,22 @@ class SlamMappingNodelet : public nodelet::Nodelet {
       NODELET_WARN_THROTTLE(5.0, "%s: %s; dropping it", scan_topic_.c_str(), problem.c_str());
       return;
     }
-    last_scan_stamp_ = stamp;
-    bool processed = false;
+    MappingUpdate update;
     try {
-      processed = slam_->AddScan(scan, odom_pose, scan_index_++);
+      update = session_->AddScan(stamp.toSec(), odom_pose, scan);
     } catch (const std::invalid_argument& e) {
       NODELET_WARN_THROTTLE(5.0, "%s: %s; dropping it", scan_topic_.c_str(), e.what());
       return;
     }
-    if (!processed) return;
-    started_ = true;
-    last_processed_odom_ = odom_pose;
-    std_msgs::Float64 entropy;
-    entropy.data = PoseEntropy(slam_->slam().particles());
-    entropy_pub_.publish(entropy);
-    if (last_map_update_.isZero() || (stamp - last_map_update_).toSec() >= options_.map_update_interval_s) {
-      PublishMap(stamp);  // with the back end on, this solves the graph
+    if (!update.scan_refused_reason.empty()) {
+      NODELET_WARN_THROTTLE(5.0, "%s: %s; dropping it", scan_topic_.c_str(), update.scan_refused_reason.c_str());
+      return;
     }
-    // The back end's last solve (or the best particle before the first one), so that map -> odom agrees
-    // with the map last published.
-    map_to_odom_ = MapToOdom(slam_->EstimatedPose(odom_pose), odom_pose);
+    if (!update.scan_processed) return;
+    std_msgs::Float64 entropy;
+    entropy.data = PoseEntropy(session_->slam().slam().particles());
+    entropy_pub_.publish(entropy);
+    if (update.solved) PublishMap(stamp);
   }
 
   void OnDetections(const TextDetectionArray::ConstPtr& msg) {
@@ -179,54 +174,51 @@ class SlamMappingNodelet : public nodelet::Nodelet {
       NODELET_WARN_THROTTLE(5.0, "%s: detection %s; dropping it", detections_topic_.c_str(), r.c_str());
     }
     bool changed = false;
-    for (const PlateSighting& sighting : sightings) {
+    for (const PlateSighting& sighting : sightings) {  // one by one: a malformed one does not drop the others
       try {
-        const TextSlamPlateResult result = slam_->AddPlate(sighting, odom_pose);
-        if (result.used()) {
-          changed = true;
-          NODELET_INFO("slam mapping: plate '%s' %s (landmark %d, range %.2f m)", sighting.text.c_str(),
-                       result.outcome == PlateOutcome::kNewLandmark ? "mapped" : "re-observed",
-                       result.landmark_index, result.range_m);
-        } else {
-          NODELET_INFO("slam mapping: plate '%s' not used: %s", sighting.text.c_str(), result.reason.c_str());
+        for (const MappingPlateOutcome& o : session_->AddPlates(stamp.toSec(), odom_pose, {sighting}).plates) {
+          if (o.result.used()) {
+            changed = true;
+            NODELET_INFO("slam mapping: plate '%s' %s (landmark %d, range %.2f m)", o.sighting.text.c_str(),
+                         o.result.outcome == PlateOutcome::kNewLandmark ? "mapped" : "re-observed",
+                         o.result.landmark_index, o.result.range_m);
+          } else {
+            NODELET_INFO("slam mapping: plate '%s' not used: %s", o.sighting.text.c_str(), o.result.reason.c_str());
+          }
         }
       } catch (const std::invalid_argument& e) {
         NODELET_WARN_THROTTLE(5.0, "%s: detection '%s': %s; dropping it", detections_topic_.c_str(),
                               sighting.text.c_str(), e.what());
       }
     }
-    if (changed && started_) {
-      // Before the back end's first solve the pose is the best particle's, which the plate may have changed.
-      map_to_odom_ = MapToOdom(slam_->EstimatedPose(last_processed_odom_), last_processed_odom_);
-      markers_pub_.publish(ToTextLandmarkMarkers(MapFrameTextMap(), options_.map_frame, stamp));
-    }
+    // The landmarks as they stand (the last solve's positions, the best particle's for plates read since).
+    if (changed) markers_pub_.publish(ToTextLandmarkMarkers(MapFrame(session_->slam().BuildTextMap()), options_.map_frame, stamp));
   }
 
   void OnTfTimer(const ros::TimerEvent&) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!started_) return;
+    if (!session_->MapToOdom()) return;
     geometry_msgs::TransformStamped t;
     t.header.frame_id = options_.map_frame;
     t.child_frame_id = options_.odom_frame;
     t.header.stamp = ros::Time::now() + ros::Duration(options_.transform_publish_period_s);
     if (t.header.stamp <= last_tf_stamp_) return;  // sim time did not advance: tf2 would drop a repeat
     last_tf_stamp_ = t.header.stamp;
-    t.transform = ToTransformMsg(map_to_odom_);
+    t.transform = ToTransformMsg(*session_->MapToOdom());
     tf_broadcaster_.sendTransform(t);
   }
 
-  TextMap MapFrameTextMap() const {
-    TextMap map = slam_->BuildTextMap();
+  TextMap MapFrame(TextMap map) const {
     map.frame_id = options_.map_frame;
     return map;
   }
 
+  // The maps of the session's last solve.
   void PublishMap(const ros::Time& stamp) {
-    last_map_update_ = stamp;
-    latest_map_ = ToOccupancyGridMsg(slam_->BuildOccupancyGrid(), options_.map_frame, stamp);
+    latest_map_ = ToOccupancyGridMsg(*session_->Map(), options_.map_frame, stamp);
     map_pub_.publish(*latest_map_);
     metadata_pub_.publish(latest_map_->info);
-    markers_pub_.publish(ToTextLandmarkMarkers(MapFrameTextMap(), options_.map_frame, stamp));
+    markers_pub_.publish(ToTextLandmarkMarkers(MapFrame(session_->GetTextMap()), options_.map_frame, stamp));
   }
 
   bool OnGetMap(nav_msgs::GetMap::Request&, nav_msgs::GetMap::Response& res) {
@@ -244,17 +236,19 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     return true;
   }
 
-  // Writes the occupancy map and the text map atomically; never replaces saved maps with an empty one.
+  // Solves, then writes the occupancy map and the text map atomically; never replaces saved maps with an
+  // empty one.
   bool SaveMaps(std::string* message) {
-    if (!started_) {
+    if (!session_->started()) {
       *message = "no scan processed yet: nothing to save (files in " + options_.map_output_dir + " left alone)";
       return false;
     }
     const std::string base = options_.map_output_dir + "/" + options_.map_name;
     try {
       std::filesystem::create_directories(options_.map_output_dir);
-      SaveOccupancyMap(slam_->BuildOccupancyGrid(), base);
-      TextMap text_map = MapFrameTextMap();
+      session_->Solve();
+      SaveOccupancyMap(*session_->Map(), base);
+      TextMap text_map = MapFrame(session_->GetTextMap());
       text_map.occupancy_map = options_.map_name + ".yaml";
       SaveTextMap(text_map, base + ".text_map.yaml");
       *message = "saved " + base + ".pgm, " + base + ".yaml and " + base + ".text_map.yaml (" +
@@ -269,7 +263,7 @@ class SlamMappingNodelet : public nodelet::Nodelet {
   SlamMappingNodeOptions options_;
   SlamInputFrames frames_;
   TransformLookup lookup_;
-  std::unique_ptr<TextSlam> slam_;
+  std::unique_ptr<MappingSession> session_;
   std::mutex mutex_;  // guards everything below
   std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
@@ -281,12 +275,7 @@ class SlamMappingNodelet : public nodelet::Nodelet {
   ros::ServiceServer map_srv_, save_srv_;
   ros::Timer tf_timer_;
   std::string scan_topic_, detections_topic_;
-  long scans_received_ = 0;
-  int scan_index_ = 0;
-  ros::Time last_scan_stamp_, last_map_update_, last_tf_stamp_;
-  bool started_ = false;            // a scan was processed: the map frame exists
-  Pose2D last_processed_odom_;      // base_link in odom at the last processed scan
-  Pose2D map_to_odom_;
+  ros::Time last_tf_stamp_;
   std::optional<nav_msgs::OccupancyGrid> latest_map_;
 };
 

@@ -45,7 +45,7 @@ const GmappingAlias kAliases[] = {
 const char* const kIgnoredGmapping[] = {
     "sigma", "kernelSize", "lstep", "astep", "iterations", "lsigma", "ogain", "lskip", "minimumScore",
     "llsamplerange", "llsamplestep", "lasamplerange", "lasamplestep", "xmin", "ymin", "xmax", "ymax",
-    "temporalUpdate", "occ_thresh", "tf_delay"};
+    "occ_thresh", "tf_delay"};
 
 std::string DefaultOutputDir() {
   if (const char* ros_home = std::getenv("ROS_HOME"); ros_home != nullptr && *ros_home != '\0') {
@@ -56,6 +56,15 @@ std::string DefaultOutputDir() {
 }
 
 }  // namespace
+
+MappingSessionOptions ToMappingSessionOptions(const SlamMappingNodeOptions& o) {
+  MappingSessionOptions session;
+  session.slam = o.slam;
+  session.throttle_scans = o.throttle_scans;
+  session.temporal_update_s = o.temporal_update_s;
+  session.map_update_interval_s = o.map_update_interval_s;
+  return session;
+}
 
 TextSlamOptions GmappingDefaultSlamOptions() {
   TextSlamOptions slam;
@@ -90,7 +99,12 @@ const ParamTable<O>& SlamMappingParamTable() {
                  "`range_max`",
                  r::NonNegative()),
         Param<O>("map_update_interval", DOORPLATE_PARAM_FIELD(map_update_interval_s),
-                 "seconds (ROS time) between publications of `map` / `map_metadata`", r::Positive()),
+                 "seconds (scan stamps) between back-end solves, each published on `map` / `map_metadata`",
+                 r::Positive()),
+        Param<O>("temporalUpdate", DOORPLATE_PARAM_FIELD(temporal_update_s),
+                 "also process a scan when this many seconds (scan stamps) passed since the last processed one, "
+                 "moving or not; <= 0: off (gmapping's name and default)",
+                 r::Finite()),
         Param<O>("transform_publish_period", DOORPLATE_PARAM_FIELD(transform_publish_period_s),
                  "seconds between `map → odom` broadcasts (0 = none); each is future-dated by one period",
                  r::NonNegative()),
@@ -167,7 +181,7 @@ SlamMappingNodeOptions SlamMappingOptionsFrom(const ParamSource& source) {
                          e.what());
   }
   // The core validates its own ranges; its message names the field (and so the gmapping name, if it has one).
-  CheckWithCore(table, o, source, [&o] { (void)TextSlam(o.slam); });
+  CheckWithCore(table, o, source, [&o] { ValidateMappingSessionOptions(ToMappingSessionOptions(o)); (void)TextSlam(o.slam); });
   if (o.map_output_dir.empty()) o.map_output_dir = DefaultOutputDir();
   for (const char* name : kIgnoredGmapping) {
     if (source.Has(name)) o.ignored_parameters.push_back(source.Resolve(name));

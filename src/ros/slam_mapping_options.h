@@ -1,7 +1,7 @@
 // Parameters of SlamMappingNodelet, read and validated once from its private namespace.
 // Two kinds of names (docs/parameters.md, section SlamMappingNodelet):
 //  - gmapping's names and defaults where they mean the same thing in our filter: particles, linearUpdate,
-//    angularUpdate, resampleThreshold, maxUrange, maxRange, delta, srr, srt, str, stt,
+//    angularUpdate, temporalUpdate, resampleThreshold, maxUrange, maxRange, delta, srr, srt, str, stt,
 //    map_update_interval, transform_publish_period, throttle_scans, base_frame, odom_frame, map_frame;
 //  - every option of the SLAM core by its name in the one option table (slam/rbpf_slam_options.h:
 //    TextSlamOptionNames(), the names doorplate_map_log / doorplate_map_bag take with --set), with `/`
@@ -21,6 +21,7 @@
 
 #include "doorplate_localization/ros/param_reader.h"
 #include "doorplate_localization/ros/param_table.h"
+#include "doorplate_localization/slam/mapping_session.h"
 #include "doorplate_localization/slam/text_slam.h"
 
 namespace doorplate_localization {
@@ -34,7 +35,8 @@ struct SlamMappingNodeOptions {
   std::string base_frame = "base_link";     // ~base_frame
   std::string odom_frame = "odom";          // ~odom_frame
   std::string map_frame = "map";            // ~map_frame
-  double map_update_interval_s = 5.0;       // ~map_update_interval: republish map this often (ROS time)
+  double map_update_interval_s = 5.0;       // ~map_update_interval: solve and republish the map this often (scan stamps)
+  double temporal_update_s = -1.0;          // ~temporalUpdate: also process a scan this long after the last one (<= 0: off)
   double transform_publish_period_s = 0.05; // ~transform_publish_period: map -> odom period; 0 = never
   double max_range_m = 0.0;                 // ~maxRange: readings >= this are no-echo; 0 = scan's range_max
   int throttle_scans = 1;                   // ~throttle_scans: use every n-th scan
@@ -46,6 +48,10 @@ struct SlamMappingNodeOptions {
   bool save_on_shutdown = true;             // ~save_on_shutdown
   std::vector<std::string> ignored_parameters;  // gmapping parameters set but not used (warned at start)
 };
+
+// The mapping session's options from the node's (slam, throttle_scans, temporal_update_s,
+// map_update_interval_s; the session's own defaults for the rest).
+MappingSessionOptions ToMappingSessionOptions(const SlamMappingNodeOptions& options);
 
 // Every parameter of the table: name, field, default, rule, doc line.
 const ParamTable<SlamMappingNodeOptions>& SlamMappingParamTable();

@@ -115,7 +115,7 @@ void RbpfSlam::IntegrateScanInto(TiledGrid* map, const RangeScan& scan, const Po
   Integrate(*map, pose, PrepareScan(scan));
 }
 
-bool RbpfSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index) {
+bool RbpfSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index, bool force_update) {
   ValidateScan(scan);
   ++stats_.scans_seen;
   if (!started_) {
@@ -135,7 +135,7 @@ bool RbpfSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int s
       pending_spread_, motion_.Spread(last_received_odometry_.Between(odometry_pose)));
   last_received_odometry_ = odometry_pose;
   const Pose2D delta = last_odometry_.Between(odometry_pose);
-  if (std::hypot(delta.x_m, delta.y_m) < options_.linear_update_m &&
+  if (!force_update && std::hypot(delta.x_m, delta.y_m) < options_.linear_update_m &&
       std::abs(NormalizeAngle(delta.theta_rad)) < options_.angular_update_rad) {
     return false;
   }

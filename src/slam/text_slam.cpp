@@ -29,7 +29,9 @@ const TextSlamOptions& Validated(const TextSlamOptions& o) {
   return o;
 }
 
-void ValidateSighting(const PlateSighting& s) {
+}  // namespace
+
+void ValidatePlateSighting(const PlateSighting& s) {
   const auto fail = [](const std::string& what) { throw std::invalid_argument("PlateSighting." + what); };
   if (s.text.empty()) fail("text: must not be empty");
   if (!(s.confidence >= 0 && s.confidence <= 1)) fail("confidence: must be in [0, 1], got " + std::to_string(s.confidence));
@@ -38,6 +40,8 @@ void ValidateSighting(const PlateSighting& s) {
     fail("range_m: must be finite and >= 0 when set, got " + std::to_string(*s.range_m));
   }
 }
+
+namespace {
 
 // `caller` names the method in the message ("TextSlam::AddScan").
 void ValidatePose(const Pose2D& p, const char* caller) {
@@ -68,42 +72,11 @@ TextSlam::TextSlam(const TextSlamOptions& options)
       slam_(options.slam),
       back_end_(BackEndOptions(options)) {}
 
-bool TextSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index) {
-  ValidatePose(odometry_pose, "TextSlam::AddScan");
-  const bool processed = slam_.AddScan(scan, odometry_pose, scan_index);
-  last_scan_ = scan;
-  if (processed && options_.back_end.enabled) {
-    back_end_.AddNode(slam_.MatchPoints(scan), odometry_pose, slam_.BestParticle().pose);
-    node_scans_.push_back(scan);
-  }
-  return processed;
-}
-
-std::optional<SlamBackEndResult> TextSlam::BackEndResult() const {
-  if (!options_.back_end.enabled || back_end_.num_nodes() == 0) return std::nullopt;
-  if (!back_end_result_ || back_end_result_nodes_ != back_end_.num_nodes() || back_end_result_readings_ != plate_readings_) {
-    back_end_result_ = back_end_.Optimize();
-    back_end_result_nodes_ = back_end_.num_nodes();
-    back_end_result_readings_ = plate_readings_;
-  }
-  return back_end_result_;
-}
-
-std::vector<Pose2D> TextSlam::Trajectory() const {
-  if (const std::optional<SlamBackEndResult> r = BackEndResult()) return r->poses;
-  std::vector<Pose2D> poses;
-  if (!slam_.started()) return poses;
-  for (const TrajectoryPoint& p : slam_.BestTrajectory()) poses.push_back(p.pose);
-  return poses;
-}
-
-std::optional<double> TextSlam::RangeFromLastScan(double bearing_rad) const {
-  if (!last_scan_) return std::nullopt;
-  const RangeScan& scan = *last_scan_;
+std::optional<double> PlateRangeAlongBearing(const RangeScan& scan, double bearing_rad, double window_rad) {
   // The plate's bearing is from base_link; beams are from the laser. For a laser near base_link (the
   // usual mount) the difference is the mounting offset, corrected below by intersecting the beam.
   std::vector<double> ranges;
-  const double half = std::max(options_.range_beam_window_rad, std::abs(scan.angle_increment_rad) * 0.51);
+  const double half = std::max(window_rad, std::abs(scan.angle_increment_rad) * 0.51);
   for (int i = 0; i < static_cast<int>(scan.ranges_m.size()); ++i) {
     const double r = scan.ranges_m[i];
     if (!std::isfinite(r) || r < scan.min_range_m) continue;
@@ -116,8 +89,43 @@ std::optional<double> TextSlam::RangeFromLastScan(double bearing_rad) const {
   return ranges[ranges.size() / 2];
 }
 
+bool TextSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index, bool force_update) {
+  ValidatePose(odometry_pose, "TextSlam::AddScan");
+  const bool processed = slam_.AddScan(scan, odometry_pose, scan_index, force_update);
+  if (processed && options_.back_end.enabled) {
+    back_end_.AddNode(slam_.MatchPoints(scan), odometry_pose, slam_.BestParticle().pose);
+    node_scans_.push_back(scan);
+  }
+  return processed;
+}
+
+void TextSlam::Solve() {
+  if (!options_.back_end.enabled || back_end_.num_nodes() == 0) return;
+  solved_ = back_end_.Optimize();
+}
+
+int TextSlam::nodes_since_solve() const {
+  if (!options_.back_end.enabled) return 0;
+  return back_end_.num_nodes() - (solved_ ? static_cast<int>(solved_->poses.size()) : 0);
+}
+
+std::vector<Pose2D> TextSlam::Trajectory() const {
+  std::vector<Pose2D> poses;
+  if (solved_ && !solved_->poses.empty()) {
+    poses = solved_->poses;
+    const int last = static_cast<int>(poses.size()) - 1;
+    for (int node = last + 1; node < back_end_.num_nodes(); ++node) {
+      poses.push_back(solved_->poses.back().Compose(back_end_.NodeOdometry(last).Between(back_end_.NodeOdometry(node))));
+    }
+    return poses;
+  }
+  if (!slam_.started()) return poses;
+  for (const TrajectoryPoint& p : slam_.BestTrajectory()) poses.push_back(p.pose);
+  return poses;
+}
+
 TextSlamPlateResult TextSlam::AddPlate(const PlateSighting& sighting, const Pose2D& odometry_pose) {
-  ValidateSighting(sighting);
+  ValidatePlateSighting(sighting);
   ValidatePose(odometry_pose, "TextSlam::AddPlate");
   TextSlamPlateResult result;
   if (!room_grammar_.Accepts(sighting.text)) {
@@ -141,10 +149,10 @@ TextSlamPlateResult TextSlam::AddPlate(const PlateSighting& sighting, const Pose
     result.reason = "odometry moved too far since the last processed scan";
     return result;
   }
-  const std::optional<double> range = sighting.range_m ? sighting.range_m : RangeFromLastScan(sighting.bearing_rad);
+  const std::optional<double> range = sighting.range_m;
   if (!range) {
     result.outcome = PlateOutcome::kNoRange;
-    result.reason = "no range given and no usable beam along the bearing";
+    result.reason = "no range (none given, no usable beam along the bearing)";
     return result;
   }
   result.range_m = *range;
@@ -207,7 +215,6 @@ TextSlamPlateResult TextSlam::AddPlate(const PlateSighting& sighting, const Pose
   });
   if (options_.back_end.enabled && back_end_.num_nodes() > 0) {
     back_end_.AddPlateReading(id, back_end_.num_nodes() - 1, since_scan.TransformPoint(local));
-    ++plate_readings_;
   }
   result.outcome = is_new ? PlateOutcome::kNewLandmark : PlateOutcome::kReobserved;
   result.landmark_index = id;
@@ -218,9 +225,9 @@ TextSlamPlateResult TextSlam::AddPlate(const PlateSighting& sighting, const Pose
 Pose2D TextSlam::BestPose() const { return slam_.BestParticle().pose; }
 
 Pose2D TextSlam::EstimatedPose(const Pose2D& odometry_pose) const {
-  if (back_end_result_ && !back_end_result_->poses.empty()) {
-    const int node = static_cast<int>(back_end_result_->poses.size()) - 1;
-    return back_end_result_->poses.back().Compose(back_end_.NodeOdometry(node).Between(odometry_pose));
+  if (solved_ && !solved_->poses.empty()) {
+    const int node = static_cast<int>(solved_->poses.size()) - 1;
+    return solved_->poses.back().Compose(back_end_.NodeOdometry(node).Between(odometry_pose));
   }
   return BestPose().Compose(slam_.LastProcessedOdometry().Between(odometry_pose));
 }
@@ -229,9 +236,9 @@ std::vector<SlamLandmark> TextSlam::BestLandmarks() const {
   if (!slam_.started()) return {};
   const SlamLandmarksHandle& h = slam_.BestParticle().landmarks;
   std::vector<SlamLandmark> list = h ? *h : SlamLandmarks{};
-  if (const std::optional<SlamBackEndResult> r = BackEndResult()) {
+  if (solved_) {
     for (SlamLandmark& l : list) {
-      if (l.id < static_cast<int>(r->plates.size()) && r->plates[l.id]) l.position = *r->plates[l.id];
+      if (l.id < static_cast<int>(solved_->plates.size()) && solved_->plates[l.id]) l.position = *solved_->plates[l.id];
     }
   }
   std::sort(list.begin(), list.end(), [](const SlamLandmark& a, const SlamLandmark& b) { return a.id < b.id; });
@@ -240,11 +247,11 @@ std::vector<SlamLandmark> TextSlam::BestLandmarks() const {
 
 OccupancyGrid TextSlam::BuildOccupancyGrid() const {
   if (!slam_.started()) throw std::logic_error("TextSlam::BuildOccupancyGrid: no scan was added yet");
-  const std::optional<SlamBackEndResult> r = BackEndResult();
-  if (!r) return slam_.BestParticle().map.ToOccupancyGrid();
+  if (!solved_) return slam_.BestParticle().map.ToOccupancyGrid();
+  const std::vector<Pose2D> poses = Trajectory();
   TiledGrid grid(options_.slam.grid);
-  for (std::size_t i = 0; i < node_scans_.size() && i < r->poses.size(); ++i) {
-    slam_.IntegrateScanInto(&grid, node_scans_[i], r->poses[i]);
+  for (std::size_t i = 0; i < node_scans_.size() && i < poses.size(); ++i) {
+    slam_.IntegrateScanInto(&grid, node_scans_[i], poses[i]);
   }
   return grid.ToOccupancyGrid();
 }

@@ -1,10 +1,16 @@
-// doorplate_map_log: maps a CARMEN log (FLASER lines; odometry from the second pose triple) offline with
-// the same RbpfSlam the mapping nodelet runs, and writes the real-log protocol's outputs:
-//   DIR/trajectory.txt        `scan_index x y theta` per processed scan: the posterior mean trajectory
-//                              (RbpfSlam::MeanTrajectory); DIR/trajectory_best.txt: the best particle's
-//   DIR/map.pgm, DIR/map.yaml  the best particle's map, map_server format
+// doorplate_map_log: maps a CARMEN log (FLASER lines; odometry from the second pose triple) offline through
+// the mapping session the mapping nodelet runs (slam/mapping_session.h), and writes the real-log protocol's
+// outputs:
+//   DIR/trajectory.txt        `scan_index x y theta` per processed scan: --method slam (default): the back
+//                              end's solved trajectory (the nodelet's SLAM: filter + pose graph); --method
+//                              rbpf: the laser-only filter's posterior mean (RbpfSlam::MeanTrajectory; the
+//                              filter as docs/results/real-logs.md measured it). DIR/trajectory_best.txt:
+//                              the best particle's history (both methods)
+//   DIR/map.pgm, DIR/map.yaml  the session's map (slam: rendered at the solved poses; rbpf: the best
+//                              particle's), map_server format
 //   DIR/map_trajectory.png     the map with the trajectory drawn over it
-// and a progress line on stderr every few seconds.
+// and a progress line on stderr every few seconds. Scan stamps are the log's ipc_timestamps when they
+// increase from line to line, else the FLASER order (one second per line; said on stderr).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -21,7 +27,7 @@
 #include "output_guard.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/slam/carmen_reader.h"
-#include "doorplate_localization/slam/rbpf_slam.h"
+#include "doorplate_localization/slam/mapping_session.h"
 #include "doorplate_localization/slam/rbpf_slam_options.h"
 
 namespace dl = doorplate_localization;
@@ -29,11 +35,14 @@ namespace dl = doorplate_localization;
 namespace {
 
 const char kUsage[] =
-    "usage: doorplate_map_log --log FILE.log --out DIR [--seed S] [--particles N]\n"
+    "usage: doorplate_map_log --log FILE.log --out DIR [--method slam|rbpf] [--seed S] [--particles N]\n"
     "         [--progress-s SECONDS] [--set NAME=VALUE]... [--dump-particles]\n"
-    "  FILE.log: a CARMEN log (unpacked). --set changes any numeric RbpfSlamOptions field, e.g.\n"
-    "  --set linear_update_m=0.5 --set matcher.field_sigma_m=0.05 (see docs/slam.md for the names).\n"
-    "  --dump-particles also writes every particle's trajectory (trajectory_particleI.txt).\n";
+    "  FILE.log: a CARMEN log (unpacked). --method slam (default): the mapping nodelet's SLAM (filter with\n"
+    "  TextSlamOptions' defaults and the pose-graph back end); rbpf: the laser-only filter alone\n"
+    "  (RbpfSlamOptions' defaults, no back end; docs/results/real-logs.md). --set changes any option of the\n"
+    "  one option table (TextSlamOptionNames), after --method, e.g. --set linear_update_m=0.5\n"
+    "  --set matcher.field_sigma_m=0.05 (docs/slam.md). --dump-particles also writes every particle's\n"
+    "  trajectory (trajectory_particleI.txt).\n";
 
 namespace tools = doorplate_localization::tools;
 using tools::UsageError;
@@ -42,11 +51,23 @@ struct Args {
   std::string log, out;
   bool dump_particles = false;
   double progress_s = 5.0;
-  dl::RbpfSlamOptions options;
+  bool laser_only = false;  // --method rbpf
+  dl::MappingSessionOptions options;
 };
 
 Args ParseArgs(int argc, char** argv) {
   Args args;
+  // --method first: it picks the defaults the other options change.
+  for (int i = 1; i + 1 < argc; ++i) {
+    if (std::string(argv[i]) != "--method") continue;
+    const std::string method = argv[i + 1];
+    if (method == "rbpf") args.laser_only = true;
+    else if (method != "slam") throw UsageError("--method must be slam or rbpf, got '" + method + "'");
+  }
+  if (args.laser_only) {
+    args.options.slam.slam = dl::RbpfSlamOptions{};
+    args.options.slam.back_end.enabled = false;
+  }
   for (int i = 1; i < argc; ++i) {
     const std::string option = argv[i];
     tools::ExitIfHelp(option, kUsage);
@@ -55,19 +76,21 @@ Args ParseArgs(int argc, char** argv) {
       continue;
     }
     const std::string value = tools::TakeValue(argc, argv, &i);
-    if (option == "--log") {
+    if (option == "--method") {
+      continue;  // read above
+    } else if (option == "--log") {
       args.log = value;
     } else if (option == "--out") {
       args.out = value;
     } else if (option == "--progress-s") {
       args.progress_s = tools::ParseNumber(option, value);
     } else if (option == "--seed") {
-      args.options.seed = static_cast<std::uint64_t>(tools::ParseWholeNumber(option, value, 0));
+      args.options.slam.slam.seed = static_cast<std::uint64_t>(tools::ParseWholeNumber(option, value, 0));
     } else if (option == "--particles") {
-      args.options.num_particles = static_cast<int>(tools::ParseWholeNumber(option, value, 1));
+      args.options.slam.slam.num_particles = static_cast<int>(tools::ParseWholeNumber(option, value, 1));
     } else if (option == "--set") {
       tools::ApplySetOption(value,
-                            [&](const std::string& name, double v) { SetRbpfSlamOption(name, v, &args.options); });
+                            [&](const std::string& name, double v) { SetTextSlamOption(name, v, &args.options.slam); });
     } else {
       throw UsageError("unknown option '" + option + "'");
     }
@@ -114,42 +137,58 @@ int Run(const Args& args) {
     const bool gz = args.log.size() > 3 && args.log.compare(args.log.size() - 3, 3, ".gz") == 0;
     throw std::runtime_error(args.log + ": no FLASER lines" + (gz ? " (a .gz log must be unpacked first)" : ""));
   }
-  dl::RbpfSlam slam(args.options);
+  // The log's ipc_timestamps as scan stamps if they increase, else the FLASER order.
+  bool increasing = true;
+  for (std::size_t i = 1; i < log.scans.size() && increasing; ++i) {
+    increasing = log.scans[i].timestamp_s > log.scans[i - 1].timestamp_s;
+  }
+  if (!increasing) {
+    std::fprintf(stderr, "doorplate_map_log: %s: the ipc_timestamps do not increase line by line; scans are stamped "
+                 "by their FLASER order instead\n", args.log.c_str());
+  }
+  dl::MappingSession session(args.options);
+  const dl::RbpfSlam& filter = session.slam().slam();
   double next_progress = args.progress_s;
   for (const dl::CarmenScan& record : log.scans) {
-    slam.AddScan(record.scan, record.odometry_pose, record.scan_index);
+    session.AddScan(increasing ? record.timestamp_s : record.scan_index, record.odometry_pose, record.scan);
     if (clock.Seconds() >= next_progress) {
       next_progress += args.progress_s;
-      const dl::RbpfSlamStats& s = slam.stats();
+      const dl::RbpfSlamStats& s = filter.stats();
       std::fprintf(stderr,
                    "doorplate_map_log: scan %d/%zu, processed %d, neff %.1f, resamplings %d, weak %ld, "
                    "jumps rejected %ld, maps %.0f MB, %.1f s, peak RSS %.0f MB\n",
                    s.scans_seen, log.scans.size(), s.scans_processed, s.last_neff, s.resamplings,
-                   s.weak_matches, s.rejected_jumps, slam.MapMemoryBytes() / 1e6, clock.Seconds(), tools::PeakRssMb());
+                   s.weak_matches, s.rejected_jumps, filter.MapMemoryBytes() / 1e6, clock.Seconds(), tools::PeakRssMb());
     }
   }
-  const dl::SlamParticle& best = slam.BestParticle();
-  const std::vector<dl::TrajectoryPoint> trajectory = slam.MeanTrajectory();
-  const dl::OccupancyGrid grid = best.map.ToOccupancyGrid();
+  session.Solve();  // the back end (slam), and the map
+  std::vector<dl::TrajectoryPoint> trajectory;
+  if (args.laser_only) {
+    trajectory = filter.MeanTrajectory();
+  } else {
+    const std::vector<dl::Pose2D> poses = session.Trajectory();
+    for (std::size_t i = 0; i < poses.size(); ++i) trajectory.push_back({session.processed_scan_indices().at(i), poses[i]});
+  }
+  const dl::OccupancyGrid& grid = *session.Map();
   // Nothing is written unless the run made a map and a finite trajectory (an older result stays).
   tools::RequireFiniteTrajectory(trajectory, args.log);
   tools::RequireUsableMap(grid, args.log);
   tools::WriteTrajectory(trajectory, args.out + "/trajectory.txt");
-  tools::WriteTrajectory(slam.BestTrajectory(), args.out + "/trajectory_best.txt");
+  tools::WriteTrajectory(filter.BestTrajectory(), args.out + "/trajectory_best.txt");
   if (args.dump_particles) {
-    for (std::size_t i = 0; i < slam.particles().size(); ++i) {
-      tools::WriteTrajectory(dl::UnrollTrajectory(slam.particles()[i].trajectory),
+    for (std::size_t i = 0; i < filter.particles().size(); ++i) {
+      tools::WriteTrajectory(dl::UnrollTrajectory(filter.particles()[i].trajectory),
                              args.out + "/trajectory_particle" + std::to_string(i) + ".txt");
     }
   }
   dl::SaveOccupancyMap(grid, map_base);
   WritePicture(grid, trajectory, args.out + "/map_trajectory.png");
-  const dl::RbpfSlamStats& s = slam.stats();
+  const dl::RbpfSlamStats& s = filter.stats();
   std::fprintf(stderr,
-               "doorplate_map_log: done: %d scans, %d processed, %d resamplings, %ld matches, %ld weak, "
+               "doorplate_map_log: done (%s): %d scans, %d processed, %d resamplings, %ld matches, %ld weak, "
                "%ld jumps rejected, no-return %.2f m, maps %.0f MB, %.1f s, peak RSS %.0f MB\n",
-               s.scans_seen, s.scans_processed, s.resamplings, s.matches, s.weak_matches,
-               s.rejected_jumps, log.no_return_range_m, slam.MapMemoryBytes() / 1e6, clock.Seconds(),
+               args.laser_only ? "rbpf" : "slam", s.scans_seen, s.scans_processed, s.resamplings, s.matches,
+               s.weak_matches, s.rejected_jumps, log.no_return_range_m, filter.MapMemoryBytes() / 1e6, clock.Seconds(),
                tools::PeakRssMb());
   return 0;
 }

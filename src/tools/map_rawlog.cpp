@@ -1,6 +1,7 @@
 // doorplate_map_rawlog: maps an MRPT rawlog (action-observation pairs: CActionRobotMovement2D odometry
-// increments, CObservation2DRangeScan scans, read with MRPT's own CRawlog) offline with the same laser SLAM
-// (TextSlam without plates, same option table) as the mapping nodelet, writes DIR/map.{pgm,yaml} and
+// increments, CObservation2DRangeScan scans, read with MRPT's own CRawlog) offline through the mapping
+// session the mapping nodelet runs (slam/mapping_session.h, no plates, same option table; one scan per
+// action-observation pair, stamped by the pair's index in seconds), writes DIR/map.{pgm,yaml} (the solved map) and
 // DIR/trajectory.txt (`scan_index x y theta`, posterior mean) atomically, and prints the final pose: the
 // best particle's pose at the end of the log, in the map frame (= the odometry frame of the first
 // scan; the rawlog's odometry starts at the origin). With --expect "x y yaw_deg" it also prints the
@@ -25,8 +26,8 @@
 #include "map_tool_output.h"
 #include "output_guard.h"
 #include "doorplate_localization/maps/map_io.h"
+#include "doorplate_localization/slam/mapping_session.h"
 #include "doorplate_localization/slam/rbpf_slam_options.h"
-#include "doorplate_localization/slam/text_slam.h"
 
 namespace dl = doorplate_localization;
 namespace tools = dl::tools;
@@ -45,7 +46,7 @@ struct Args {
   bool has_expected = false;
   dl::Pose2D expected;
   double max_error = 1.0;
-  dl::TextSlamOptions options;
+  dl::MappingSessionOptions options;
 };
 
 Args ParseArgs(int argc, char** argv) {
@@ -66,7 +67,7 @@ Args ParseArgs(int argc, char** argv) {
     } else if (option == "--max-error") {
       args.max_error = tools::ParseNumber(option, value);
     } else if (option == "--seed") {
-      args.options.slam.seed = static_cast<std::uint64_t>(tools::ParseWholeNumber(option, value, 0));
+      args.options.slam.slam.seed = static_cast<std::uint64_t>(tools::ParseWholeNumber(option, value, 0));
     } else if (option == "--expect") {
       std::istringstream in(value);
       double yaw_deg = 0;
@@ -75,7 +76,7 @@ Args ParseArgs(int argc, char** argv) {
       args.has_expected = true;
     } else if (option == "--set") {
       tools::ApplySetOption(value,
-                            [&](const std::string& name, double v) { dl::SetTextSlamOption(name, v, &args.options); });
+                            [&](const std::string& name, double v) { dl::SetTextSlamOption(name, v, &args.options.slam); });
     } else {
       throw UsageError("unknown option '" + option + "'");
     }
@@ -127,7 +128,8 @@ int Run(const Args& args) {
   if (!rawlog.loadFromRawLogFile(args.rawlog) || rawlog.size() == 0) {
     throw std::runtime_error(args.rawlog + ": cannot read it as an MRPT rawlog (or it is empty)");
   }
-  dl::TextSlam slam(args.options);
+  dl::MappingSession session(args.options);
+  const dl::RbpfSlam& filter = session.slam().slam();
   dl::Pose2D odometry;
   mrpt::obs::CActionCollection::Ptr actions;
   mrpt::obs::CSensoryFrame::Ptr frame;
@@ -146,32 +148,34 @@ int Run(const Args& args) {
       const auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(obs);
       if (!scan || scan->getScanSize() < 2) continue;
       if (!args.sensor_label.empty() && scan->sensorLabel != args.sensor_label) continue;
-      slam.AddScan(ToRangeScan(*scan), odometry, scans++);
+      session.AddScan(static_cast<double>(pairs), odometry, ToRangeScan(*scan));
+      ++scans;
       break;  // one scan per step, as MRPT's RBPF inserts one sensory frame per action
     }
   }
-  if (slam.slam().stats().scans_processed == 0) throw std::runtime_error(args.rawlog + ": no 2D range scan");
+  if (filter.stats().scans_processed == 0) throw std::runtime_error(args.rawlog + ": no 2D range scan");
+  session.Solve();  // the back end, and the map rendered at its poses
   // Nothing is written unless the run made a map and a finite trajectory (an older result stays).
-  const dl::OccupancyGrid grid = slam.BuildOccupancyGrid();
-  const std::vector<dl::TrajectoryPoint> trajectory = slam.slam().MeanTrajectory();
+  const dl::OccupancyGrid& grid = *session.Map();
+  const std::vector<dl::TrajectoryPoint> trajectory = filter.MeanTrajectory();
   tools::RequireFiniteTrajectory(trajectory, args.rawlog);
   tools::RequireUsableMap(grid, args.rawlog);
   dl::SaveOccupancyMap(grid, args.out_dir + "/map");
   tools::WriteTrajectory(trajectory, args.out_dir + "/trajectory.txt");
   // At the end of the log: the best particle's pose moved on by the odometry since its last processed scan
   // (MRPT's estimated path has one pose per action-observation pair, the last at the end of the log).
-  const dl::Pose2D best = slam.BestPose().Compose(slam.slam().LastProcessedOdometry().Between(odometry));
+  const dl::Pose2D best = session.slam().BestPose().Compose(session.LastProcessedOdometry().Between(odometry));
   std::printf("doorplate_map_rawlog: %d action-observation pairs, %d scans, %d processed, %.1f s, peak RSS %.0f MB\n",
-              pairs, scans, slam.slam().stats().scans_processed,
+              pairs, scans, filter.stats().scans_processed,
               clock.Seconds(), tools::PeakRssMb());
   std::printf("final pose (best particle, end of the log): %.4f %.4f %.2f deg\n", best.x_m, best.y_m,
               best.theta_rad * 180.0 / M_PI);
-  if (slam.BackEndResult()) {  // solved by BuildOccupancyGrid above; reported, not what --expect checks
-    const dl::Pose2D graph = slam.EstimatedPose(odometry);
+  if (session.BackEndResult()) {  // solved above; reported, not what --expect checks
+    const dl::Pose2D graph = session.PoseAtOdometry(odometry);
     std::printf("final pose (pose-graph back end, end of the log): %.4f %.4f %.2f deg", graph.x_m, graph.y_m,
                 graph.theta_rad * 180.0 / M_PI);
     if (args.has_expected) std::printf(", |log| to the expected pose %.3f", LogNorm(args.expected, graph));
-    const dl::SlamBackEndResult r = *slam.BackEndResult();
+    const dl::SlamBackEndResult& r = *session.BackEndResult();
     std::printf(" (%d nodes, %d alignments, %d loop closures, odometry scale %.4f)\n", static_cast<int>(r.poses.size()),
                 r.alignment_edges, r.loop_closures, r.odometry_scale);
   }

@@ -44,6 +44,7 @@ TEST(LoadSlamMappingOptions, WithoutParametersUsesGmappingsDefaultsForItsNames) 
   EXPECT_EQ(o.slam.slam.max_usable_range_m, 80.0);
   EXPECT_EQ(o.slam.slam.motion.trans_stddev_m_per_rad, 0.2);
   EXPECT_EQ(o.map_update_interval_s, 5.0);
+  EXPECT_EQ(o.temporal_update_s, -1.0);  // gmapping's: off
   EXPECT_EQ(o.base_frame, "base_link");
   EXPECT_EQ(o.slam.slam.matcher.field_sigma_m, TextSlamOptions().slam.matcher.field_sigma_m);  // core default
   EXPECT_TRUE(o.ignored_parameters.empty());
@@ -67,7 +68,15 @@ TEST(LoadSlamMappingOptions, ReadsCoreOptionsByTheirTableNamesWithSlashes) {
   nh.setParam("text/plate_sigma_m", 0.3);
   nh.setParam("linearUpdate", 0.7);
   nh.setParam("ogain", 3.0);
+  nh.setParam("temporalUpdate", 2.5);
+  nh.setParam("throttle_scans", 2);
   const SlamMappingNodeOptions o = LoadSlamMappingOptions(nh);
+  // The session runs gmapping's scan throttling and map updates as set.
+  const MappingSessionOptions session = ToMappingSessionOptions(o);
+  EXPECT_EQ(session.temporal_update_s, 2.5);
+  EXPECT_EQ(session.throttle_scans, 2);
+  EXPECT_EQ(session.map_update_interval_s, o.map_update_interval_s);
+  EXPECT_EQ(session.slam.slam.linear_update_m, 0.7);
   EXPECT_EQ(o.slam.slam.num_particles, 7);
   EXPECT_EQ(o.slam.slam.matcher.field_sigma_m, 0.2);
   EXPECT_EQ(o.slam.plate_sigma_m, 0.3);

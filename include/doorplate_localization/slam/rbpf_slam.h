@@ -76,9 +76,10 @@ class RbpfSlam {
   explicit RbpfSlam(const RbpfSlamOptions& options);
 
   // Feeds one scan and the odometry pose (base_link in the odometry frame) at its time. Returns true
-  // if the scan was processed: the first scan, or after the update thresholds were exceeded.
+  // if the scan was processed: the first scan, or after the update thresholds were exceeded, or
+  // `force_update` (gmapping's temporalUpdate: process it whatever the motion).
   // `scan_index` is recorded in the trajectories. Throws std::invalid_argument on a bad scan geometry.
-  bool AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index);
+  bool AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index, bool force_update = false);
 
   // Hook for other evidence (e.g. text landmarks): calls log_likelihood once per particle, in order,
   // with the particle itself; adds the result to its log-weight (untempered) and resamples if Neff

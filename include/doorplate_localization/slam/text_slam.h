@@ -6,6 +6,9 @@
 // keeps the particles whose trajectory brought them back to the same plate (loop closure).
 // Per-particle landmark lists are immutable shared nodes (like the trajectory tree), so resampling
 // copies pointers. Adjacent-plate distances are also measured by odometry (eq. 13) for the text map.
+// The back end (slam_back_end.h) is solved only by Solve(); every getter is const and pure: it returns
+// what the filter and the last Solve() hold and does no work behind the caller's back. The run loop
+// (throttling, stamps, plate ranges, when to solve) is MappingSession's (mapping_session.h).
 // The laser filter runs with the degeneracy-aware proposal on (DefaultTextSlamLaserOptions).
 // Frames: the map frame is the odometry frame at the first scan; base_link poses; plates on the floor
 // plane. Units: metres, radians. See docs/slam.md for the design choices and their measurements.
@@ -32,7 +35,7 @@ struct TextSlamOptions {
   double min_confidence = 0.5;          // readings less sure than this are ignored
   double min_plate_range_m = 0.2;       // plate ranges outside [min, max] are ignored (bad beam)
   double max_plate_range_m = 5.0;
-  double range_beam_window_rad = 0.03;  // range from the last scan: median of beams within ± this
+  double range_beam_window_rad = 0.03;  // PlateRangeAlongBearing: median of beams within ± this
   double plate_sigma_m = 0.15;          // 1-sigma error of one plate position measurement
   double association_radius_m = 3.0;    // a same-text reading this close to a particle's landmark re-observes it
   double text_likelihood_gain = 1.0;    // multiplies the re-observation log-likelihood
@@ -51,14 +54,24 @@ struct PlateSighting {
   std::string text;                 // the validated room number, e.g. "214"; not empty
   double confidence = 1.0;          // probability that `text` is right, [0, 1]
   double bearing_rad = 0.0;         // plate centre seen from base_link, CCW from x forward, [-pi, pi]
-  std::optional<double> range_m;    // base_link -> plate centre on the floor plane; unset: from the last scan
+  std::optional<double> range_m;    // base_link -> plate centre on the floor plane; unset: kNoRange
+                                    // (MappingSession sets it from a scan, PlateRangeAlongBearing)
 };
+
+// Throws std::invalid_argument naming the field ("PlateSighting.bearing_rad: ...") for NaN or out-of-range
+// fields or an empty text.
+void ValidatePlateSighting(const PlateSighting& sighting);
+
+// The range to a plate at `bearing_rad` (base_link, CCW) from `scan`: the median distance from base_link
+// of the echoes whose end point lies within ± max(window_rad, 0.51 beam increments) of the bearing seen
+// from base_link (the laser's mounting offset is accounted for). nullopt when no echo is that close.
+std::optional<double> PlateRangeAlongBearing(const RangeScan& scan, double bearing_rad, double window_rad);
 
 enum class PlateOutcome {
   kNewLandmark,          // used: first reading of this text near here, a landmark was added
   kReobserved,           // used: matched an existing landmark, particles were reweighted
   kLowConfidence,        // ignored: confidence < min_confidence
-  kNoRange,              // ignored: no range given and no usable beam along the bearing
+  kNoRange,              // ignored: no range (none given, or no usable beam along the bearing)
   kRangeOutOfBounds,     // ignored: range outside [min_plate_range_m, max_plate_range_m]
   kNoScanYet,            // ignored: no scan processed yet (the map frame is not defined)
   kTooFarFromLastScan,   // ignored: odometry moved more than max_odometry_gap_m since the last scan
@@ -78,51 +91,56 @@ class TextSlam {
   // Throws std::invalid_argument naming the field if an option is out of range.
   explicit TextSlam(const TextSlamOptions& options);
 
-  // As RbpfSlam::AddScan. The scan is also kept for ranges of later plate readings (and, with the back end
-  // on, for re-rendering). Throws std::invalid_argument for a non-finite odometry pose (nothing is added).
-  bool AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index);
+  // As RbpfSlam::AddScan (force_update: process it whatever the motion, gmapping's temporalUpdate). With the
+  // back end on, a processed scan is kept for re-rendering. Throws std::invalid_argument for a non-finite
+  // odometry pose (nothing is added).
+  bool AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index, bool force_update = false);
 
-  // A doorplate read at the time of `odometry_pose` (base_link in odom). Never throws on a reading that
-  // is merely unusable (returns why it was ignored); throws std::invalid_argument naming the field
+  // A doorplate read at the time of `odometry_pose` (base_link in odom); it is tied to the last processed
+  // scan by the odometry between the two (either way in time). Never throws on a reading that is merely
+  // unusable (returns why it was ignored); throws std::invalid_argument naming the field
   // ("PlateSighting.bearing_rad ...") for NaN or out-of-range fields or an empty text.
   TextSlamPlateResult AddPlate(const PlateSighting& sighting, const Pose2D& odometry_pose);
 
-  // The map (map_server-ready: -1 unknown, 0 free, 100 occupied): every processed scan rendered at the
-  // back end's optimized poses, or the best particle's map when the back end is off.
+  // Solves the back end's graph over every node and plate reading so far and keeps the result for the
+  // getters below (no-op with the back end off or before the first scan). The only call that solves.
+  void Solve();
+
+  // The map (map_server-ready: -1 unknown, 0 free, 100 occupied): every processed scan rendered at
+  // Trajectory()'s poses when the back end is on and was solved, else the best particle's map. Renders
+  // the grid (cost grows with the scans); does not solve. Throws std::logic_error before the first scan.
   OccupancyGrid BuildOccupancyGrid() const;
-  // base_link in the map frame at every processed scan: the back end's optimized poses, or the best
-  // particle's history when the back end is off.
+  // base_link in the map frame at every processed scan. Back end on and solved: the last solve's poses,
+  // and for scans processed since, the newest solved pose ⊕ the odometry since. Else the best particle's
+  // history.
   std::vector<Pose2D> Trajectory() const;
-  // The back end's last solve (recomputed when scans or plates were added since), unset when it is off.
-  std::optional<SlamBackEndResult> BackEndResult() const;
+  // The last Solve()'s result; unset with the back end off or before the first Solve().
+  const std::optional<SlamBackEndResult>& BackEndResult() const { return solved_; }
+  // Processed scans (back-end nodes) not yet in BackEndResult(); 0 with the back end off.
+  int nodes_since_solve() const;
   // The best particle's landmarks (index = landmark id order) with adjacent distances from the map
   // (eq. 13, source "map") and from odometry (source "odometry"). Walls are labelled "wall0", "wall1",
   // ...: plates facing the same way (within 30°) on the same line (within 0.5 m across it) share one.
   TextMap BuildTextMap() const;
   // base_link in the map frame, best particle, at the last processed scan.
   Pose2D BestPose() const;
-  // base_link in the map frame at `odometry_pose` (base_link in odom, at or after the last processed
-  // scan): the back end's last solve (its newest node ⊕ the odometry since) when there is one, so that the
-  // pose agrees with the map last built; else the best particle's pose ⊕ the odometry since. Never solves.
+  // base_link in the map frame at `odometry_pose` (base_link in odom): the last solve's newest node ⊕ the
+  // odometry since when there is a solve, so that the pose agrees with the map last built; else the best
+  // particle's pose ⊕ the odometry since the last processed scan.
   Pose2D EstimatedPose(const Pose2D& odometry_pose) const;
-  // The best particle's landmarks, in id order; positions from the back end when it is on.
+  // The best particle's landmarks, in id order; positions from the last solve for the plates it placed.
   std::vector<SlamLandmark> BestLandmarks() const;
   const RbpfSlam& slam() const { return slam_; }
   const TextSlamOptions& options() const { return options_; }
   int num_landmarks() const { return next_landmark_id_; }
 
  private:
-  std::optional<double> RangeFromLastScan(double bearing_rad) const;
-
   const TextSlamOptions options_;
   RoomIdGrammar room_grammar_;          // options_.room_pattern
   RbpfSlam slam_;
-  std::optional<RangeScan> last_scan_;  // the last scan fed (ranges for readings without one)
   SlamBackEnd back_end_;
   std::vector<RangeScan> node_scans_;   // the processed scans, for re-rendering (back end on)
-  int plate_readings_ = 0;              // readings given to the back end
-  mutable std::optional<SlamBackEndResult> back_end_result_;
-  mutable int back_end_result_nodes_ = -1, back_end_result_readings_ = -1;
+  std::optional<SlamBackEndResult> solved_;  // the last Solve()
   int next_landmark_id_ = 0;
   // eq. 13 by odometry: per landmark id, the plate's position in the odometry frame at its first reading.
   std::vector<Vec2> first_reading_in_odom_;

@@ -1,7 +1,8 @@
-// doorplate_map_bag: maps a rosbag offline with the same TextSlam, option table and message conversions
-// as SlamMappingNodelet (slam_conversions.h). Reads the scans, tf (/tf and /tf_static: odom -> base_link,
+// doorplate_map_bag: maps a rosbag offline through the same mapping session (slam/mapping_session.h),
+// option table and message conversions (slam_conversions.h) as SlamMappingNodelet; the back end is solved
+// once, at the end. Reads the scans, tf (/tf and /tf_static: odom -> base_link,
 // base_link -> laser and -> camera) and, unless --no-text, the text detections, and writes
-//   DIR/map.pgm, DIR/map.yaml       the best particle's occupancy grid (map_server format)
+//   DIR/map.pgm, DIR/map.yaml       the session's map after the final solve (map_server format)
 //   DIR/map.text_map.yaml           the text-landmark map (docs/text-map-format.md)
 //   DIR/trajectory.txt              `scan_index x y theta` per processed scan (posterior mean trajectory,
 //                                   RbpfSlam::MeanTrajectory, as doorplate_map_log writes it)
@@ -29,8 +30,8 @@
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/maps/text_map.h"
 #include "doorplate_localization/ros/slam_conversions.h"
+#include "doorplate_localization/slam/mapping_session.h"
 #include "doorplate_localization/slam/rbpf_slam_options.h"
-#include "doorplate_localization/slam/text_slam.h"
 
 namespace dl = doorplate_localization;
 namespace tools = dl::tools;
@@ -54,7 +55,7 @@ struct Args {
   bool use_text = true;
   double progress_s = 5.0;
   dl::SlamInputFrames frames;
-  dl::TextSlamOptions options;
+  dl::MappingSessionOptions options;
 };
 
 std::string Topic(const std::string& name) { return name.empty() || name[0] == '/' ? name : "/" + name; }
@@ -92,12 +93,12 @@ Args ParseArgs(int argc, char** argv) {
     else if (option == "--progress-s") args.progress_s = tools::ParseNumber(option, value);
     else if (option == "--max-range-m") args.frames.max_range_m = tools::ParseNumber(option, value);
     else if (option == "--seed")
-      args.options.slam.seed = static_cast<std::uint64_t>(tools::ParseWholeNumber(option, value, 0));
+      args.options.slam.slam.seed = static_cast<std::uint64_t>(tools::ParseWholeNumber(option, value, 0));
     else if (option == "--min-valid-beams")
       args.frames.min_valid_beams = static_cast<int>(tools::ParseWholeNumber(option, value, 0));
     else if (option == "--set") {
       tools::ApplySetOption(value,
-                            [&](const std::string& name, double v) { dl::SetTextSlamOption(name, v, &args.options); });
+                            [&](const std::string& name, double v) { dl::SetTextSlamOption(name, v, &args.options.slam); });
     } else {
       throw UsageError("unknown option '" + option + "'");
     }
@@ -155,20 +156,15 @@ int Run(const Args& args) {
   if (args.use_text) topics.push_back(args.detections_topic);
   rosbag::View view(bag, rosbag::TopicQuery(BothSpellings(topics)));
   const std::size_t total = view.size();
-  dl::TextSlam slam(args.options);
+  dl::MappingSession session(args.options);
+  const dl::RbpfSlam& filter = session.slam().slam();
   Counters n;
-  ros::Time last_scan_stamp;
-  int scan_index = 0;
   std::size_t done = 0;
   double next_progress = args.progress_s;
   for (const rosbag::MessageInstance& m : view) {
     ++done;
     if (const auto scan_msg = m.instantiate<sensor_msgs::LaserScan>()) {
       ++n.scans;
-      if (!last_scan_stamp.isZero() && scan_msg->header.stamp <= last_scan_stamp) {
-        Warn(&n.scans_dropped, args.scan_topic, "stamp not after the previous scan's (time went backwards?)");
-        continue;
-      }
       dl::RangeScan scan;
       dl::Pose2D odom_pose;
       const std::string problem = dl::PrepareSlamScan(*scan_msg, lookup, args.frames, &scan, &odom_pose);
@@ -176,8 +172,8 @@ int Run(const Args& args) {
         Warn(&n.scans_dropped, args.scan_topic, problem);
         continue;
       }
-      last_scan_stamp = scan_msg->header.stamp;
-      slam.AddScan(scan, odom_pose, scan_index++);
+      const dl::MappingUpdate update = session.AddScan(scan_msg->header.stamp.toSec(), odom_pose, scan);
+      if (!update.scan_refused_reason.empty()) Warn(&n.scans_dropped, args.scan_topic, update.scan_refused_reason);
     } else if (const auto array = m.instantiate<dl::TextDetectionArray>()) {
       ++n.arrays;
       std::vector<dl::PlateSighting> sightings;
@@ -189,31 +185,31 @@ int Run(const Args& args) {
         continue;
       }
       for (const std::string& r : rejected) std::fprintf(stderr, "doorplate_map_bag: detection %s\n", r.c_str());
-      for (const dl::PlateSighting& s : sightings) {
-        const dl::TextSlamPlateResult result = slam.AddPlate(s, odom_pose);
-        ++(result.used() ? n.plates_used : n.plates_ignored);
-        if (!result.used()) std::fprintf(stderr, "doorplate_map_bag: plate '%s' not used: %s\n", s.text.c_str(),
-                                         result.reason.c_str());
+      for (const dl::MappingPlateOutcome& o : session.AddPlates(array->header.stamp.toSec(), odom_pose, sightings).plates) {
+        ++(o.result.used() ? n.plates_used : n.plates_ignored);
+        if (!o.result.used()) std::fprintf(stderr, "doorplate_map_bag: plate '%s' not used: %s\n", o.sighting.text.c_str(),
+                                           o.result.reason.c_str());
       }
     }
     if (clock.Seconds() >= next_progress) {
       next_progress += args.progress_s;
-      const dl::RbpfSlamStats& s = slam.slam().stats();
+      const dl::RbpfSlamStats& s = filter.stats();
       std::fprintf(stderr, "doorplate_map_bag: message %zu/%zu, scans %d processed of %ld, plates %ld, %d landmarks, "
                    "neff %.1f, %.1f s, peak RSS %.0f MB\n", done, total, s.scans_processed, n.scans, n.plates_used,
-                   slam.num_landmarks(), s.last_neff, clock.Seconds(), tools::PeakRssMb());
+                   session.slam().num_landmarks(), s.last_neff, clock.Seconds(), tools::PeakRssMb());
     }
   }
-  if (slam.slam().stats().scans_processed == 0) {
+  if (filter.stats().scans_processed == 0) {
     throw std::runtime_error(args.bag + ": no usable scan on " + args.scan_topic + " (" + std::to_string(n.scans) +
                              " messages, " + std::to_string(n.scans_dropped) + " dropped); nothing written");
   }
   const std::string base = args.out_dir + "/" + args.map_name;
-  dl::TextMap text_map = slam.BuildTextMap();
+  session.Solve();
+  dl::TextMap text_map = session.GetTextMap();
   text_map.frame_id = args.map_frame;
-  tools::SaveMapPair(slam.BuildOccupancyGrid(), text_map, base);
-  tools::WriteTrajectory(slam.slam().MeanTrajectory(), args.out_dir + "/trajectory.txt");
-  const dl::RbpfSlamStats& s = slam.slam().stats();
+  tools::SaveMapPair(*session.Map(), text_map, base);
+  tools::WriteTrajectory(filter.MeanTrajectory(), args.out_dir + "/trajectory.txt");
+  const dl::RbpfSlamStats& s = filter.stats();
   std::fprintf(stderr,
                "doorplate_map_bag: done: %ld scans (%ld dropped), %d processed, %ld detection arrays (%ld dropped), "
                "plates %ld used / %ld ignored, %zu landmarks, %.1f s, peak RSS %.0f MB; wrote %s.{pgm,yaml,text_map.yaml}, "

@@ -1,0 +1,147 @@
+// MappingSession: the one run loop of text SLAM. The mapping nodelet (src/ros/slam_mapping_nodelet.cpp),
+// the experiment (`doorplate_eval map`) and the offline tools (doorplate_map_log, _rawlog, _bag) feed it
+// scans and plate sightings with the odometry at their stamps, and publish or score what it returns; none
+// of them calls TextSlam itself. ROS-free.
+//
+// Frames: `map` (the odometry frame at the first processed scan; the grid, the trajectory and the plates
+// are in it), `odom` (odometry: base_link in odom), `base_link` (plate bearings and the laser's mounting
+// are in it). Units: metres, radians, seconds. Stamps are any monotonic clock in seconds (ROS time,
+// simulated time, a log's), the same one for every input.
+//
+// The rules, each in one place:
+//  - Scans (AddScan) carry the odometry at their stamp. A scan whose stamp is not after the previous
+//    scan's is refused (the session continues from the previous one). Of the scans taken, every
+//    throttle_scans-th (counting every AddScan call, as gmapping's throttle_scans) goes to the filter,
+//    which processes it once the robot moved slam.slam.linear_update_m or turned angular_update_rad since
+//    the last processed scan (gmapping's linearUpdate / angularUpdate; the filter sees every such scan, so
+//    its motion noise grows with each odometry increment), or, with temporal_update_s > 0, once that long
+//    passed since the last processed scan (gmapping's temporalUpdate).
+//  - Plate sightings (AddPlates) carry the odometry at their own stamp (tf at the detection's stamp, the
+//    simulator's odometry) and are applied when they arrive, tied to the last processed scan by the
+//    odometry between the two (either way in time: a sighting the OCR delivers after newer scans is placed
+//    where the robot was at its stamp). They are not held back for a newer scan: the filter's weights and
+//    random draws then follow the order of arrival, the order the nodelet sees live.
+//  - Plate range (a sighting without range_m): PlateRangeAlongBearing (text_slam.h, slam.range_beam_window_rad)
+//    in the received scan nearest in time to the sighting (ties: the newer), if within
+//    plate_range_max_scan_age_s of it; else the sighting has no range (PlateOutcome::kNoRange).
+//  - The back end is solved by Solve() only: explicitly, or after a processed scan when
+//    map_update_interval_s > 0 and that long passed (scan stamps) since the last solve. Solve() also
+//    rebuilds Map() and GetTextMap() and recomputes MapToOdom().
+//  - map -> odom = estimate ∘ (odometry)⁻¹ at the last processed scan (TextSlam::EstimatedPose: the last
+//    solve's newest node ⊕ odometry since, else the best particle), recomputed after every processed
+//    scan, used plate and Solve().
+// Getters are const and return what the last call left; they do no work. Deterministic for a given
+// slam.slam.seed and input sequence.
+#pragma once
+
+#include <deque>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "doorplate_localization/common/geometry2d.h"
+#include "doorplate_localization/maps/occupancy_grid.h"
+#include "doorplate_localization/maps/text_map.h"
+#include "doorplate_localization/slam/range_scan.h"
+#include "doorplate_localization/slam/text_slam.h"
+
+namespace doorplate_localization {
+
+struct MappingSessionOptions {
+  TextSlamOptions slam;                      // the filter (linear/angular update thresholds), plates, back end
+  int throttle_scans = 1;                    // use every n-th scan given (gmapping's throttle_scans), >= 1
+  double temporal_update_s = -1.0;           // > 0: also process a scan this long after the last processed one
+  double map_update_interval_s = 0.0;        // > 0: Solve() after a processed scan this long after the last solve;
+                                             // 0: only when the caller calls Solve()
+  double plate_range_max_scan_age_s = 0.5;   // range from a scan at most this far in time from the sighting
+  double scan_history_s = 2.0;               // scans kept this long (newest's stamp) for late sightings' ranges
+};
+
+// Throws std::invalid_argument naming the field ("MappingSessionOptions.throttle_scans ...", or
+// TextSlamOptions' own message) for an option out of range.
+void ValidateMappingSessionOptions(const MappingSessionOptions& options);
+
+// What became of one plate sighting.
+struct MappingPlateOutcome {
+  double stamp_s = 0.0;
+  PlateSighting sighting;      // as given to TextSlam (range_m from the session's range rule if it had none)
+  TextSlamPlateResult result;
+};
+
+// What one AddScan / AddPlates / Solve call did.
+struct MappingUpdate {
+  bool scan_taken = false;          // AddScan: the scan was accepted (stamp in order, not throttled away)
+  bool scan_processed = false;      // AddScan: the filter processed it (a new trajectory pose / graph node)
+  std::string scan_refused_reason;  // AddScan: why it was refused ("" when taken or throttled)
+  std::vector<MappingPlateOutcome> plates;  // sightings applied by this call, stamp order
+  bool solved = false;              // Solve() ran: Map(), GetTextMap(), BackEndResult() are new
+  bool map_to_odom_changed = false; // MapToOdom() was recomputed
+};
+
+struct MappingSessionCounters {
+  long long scans = 0;              // AddScan calls
+  long long scans_refused = 0;      // stamp not after the previous scan's
+  long long scans_processed = 0;
+  long long plate_sightings = 0;    // given to AddPlates
+  long long plates_used = 0;        // TextSlamPlateResult::used
+  long long solves = 0;
+};
+
+class MappingSession {
+ public:
+  // Throws std::invalid_argument naming the field of a bad option.
+  explicit MappingSession(const MappingSessionOptions& options);
+
+  // A scan (laser frame; its mounting in scan.laser_pose) and the odometry (base_link in odom) at its
+  // stamp. Throws std::invalid_argument for a bad
+  // scan geometry or a non-finite pose (ValidateScan, TextSlam::AddScan; nothing changed).
+  MappingUpdate AddScan(double stamp_s, const Pose2D& base_in_odom, const RangeScan& scan);
+  // Plate sightings made at `stamp_s`, with the odometry at that stamp. Throws std::invalid_argument
+  // (naming the field, "PlateSighting.bearing_rad ...") for a malformed sighting or a non-finite stamp or
+  // pose; nothing of the call is kept then.
+  MappingUpdate AddPlates(double stamp_s, const Pose2D& base_in_odom, const std::vector<PlateSighting>& sightings);
+  // Solves the back end (TextSlam::Solve), rebuilds Map() and GetTextMap() and recomputes MapToOdom(). Before the first processed scan it does nothing (solved stays false).
+  MappingUpdate Solve();
+
+  // --- state (as left by the last call; no getter does work beyond copying) ---
+  bool started() const { return slam_.slam().started(); }
+  // The grid and the text map built by the last Solve(); unset / empty before it.
+  const std::optional<OccupancyGrid>& Map() const { return map_; }
+  const TextMap& GetTextMap() const { return text_map_; }
+  // base_link in map per processed scan (TextSlam::Trajectory), and the index of each such scan among the
+  // AddScan calls (0-based).
+  std::vector<Pose2D> Trajectory() const { return slam_.Trajectory(); }
+  const std::vector<int>& processed_scan_indices() const { return processed_scan_indices_; }
+  const std::optional<SlamBackEndResult>& BackEndResult() const { return slam_.BackEndResult(); }
+  // map -> odom (takes odom coordinates to map ones); unset before the first processed scan.
+  const std::optional<Pose2D>& MapToOdom() const { return map_to_odom_; }
+  // base_link in map at odometry `base_in_odom` (TextSlam::EstimatedPose). Requires started().
+  Pose2D PoseAtOdometry(const Pose2D& base_in_odom) const { return slam_.EstimatedPose(base_in_odom); }
+  // Odometry at the last processed scan.
+  const Pose2D& LastProcessedOdometry() const { return slam_.slam().LastProcessedOdometry(); }
+  const TextSlam& slam() const { return slam_; }
+  const MappingSessionCounters& counters() const { return counters_; }
+  const MappingSessionOptions& options() const { return options_; }
+
+ private:
+  struct TimedScan {
+    double stamp_s;
+    RangeScan scan;
+  };
+  std::optional<double> RangeFor(double stamp_s, double bearing_rad) const;
+  void RefreshMapToOdom(MappingUpdate* update);
+
+  const MappingSessionOptions options_;
+  TextSlam slam_;
+  std::deque<TimedScan> scans_;            // received scans within scan_history_s of the newest, newest last
+  std::optional<double> last_scan_stamp_s_;
+  std::optional<double> last_processed_stamp_s_, last_solve_stamp_s_;  // scan stamps
+  int scan_calls_ = 0;
+  std::vector<int> processed_scan_indices_;
+  std::optional<OccupancyGrid> map_;
+  TextMap text_map_;
+  std::optional<Pose2D> map_to_odom_;
+  MappingSessionCounters counters_;
+};
+
+}  // namespace doorplate_localization

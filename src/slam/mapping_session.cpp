@@ -1,0 +1,124 @@
+// MappingSession: the rules are listed in mapping_session.h; each is applied here, in one place.
+#include "doorplate_localization/slam/mapping_session.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace doorplate_localization {
+namespace {
+
+const MappingSessionOptions& Validated(const MappingSessionOptions& o) {
+  ValidateMappingSessionOptions(o);
+  return o;
+}
+
+bool Finite(const Pose2D& p) { return std::isfinite(p.x_m) && std::isfinite(p.y_m) && std::isfinite(p.theta_rad); }
+
+}  // namespace
+
+void ValidateMappingSessionOptions(const MappingSessionOptions& o) {
+  const auto fail = [](const std::string& what) { throw std::invalid_argument("MappingSessionOptions." + what); };
+  if (o.throttle_scans < 1) fail("throttle_scans: must be >= 1, got " + std::to_string(o.throttle_scans));
+  if (!std::isfinite(o.temporal_update_s)) fail("temporal_update_s: must be finite (<= 0: off)");
+  if (!(o.map_update_interval_s >= 0) || !std::isfinite(o.map_update_interval_s)) {
+    fail("map_update_interval_s: must be finite and >= 0 (0: only on Solve())");
+  }
+  if (!(o.plate_range_max_scan_age_s >= 0) || !std::isfinite(o.plate_range_max_scan_age_s)) {
+    fail("plate_range_max_scan_age_s: must be finite and >= 0");
+  }
+  if (!(o.scan_history_s >= 0) || !std::isfinite(o.scan_history_s)) fail("scan_history_s: must be finite and >= 0");
+}
+
+MappingSession::MappingSession(const MappingSessionOptions& options)
+    : options_(Validated(options)), slam_(options.slam) {}
+
+MappingUpdate MappingSession::AddScan(double stamp_s, const Pose2D& base_in_odom, const RangeScan& scan) {
+  if (!std::isfinite(stamp_s)) throw std::invalid_argument("MappingSession::AddScan: stamp_s must be finite");
+  if (!Finite(base_in_odom)) throw std::invalid_argument("MappingSession::AddScan: base_in_odom must be finite");
+  if (scan.ranges_m.empty() || !std::isfinite(scan.angle_min_rad) || !std::isfinite(scan.angle_increment_rad) ||
+      scan.angle_increment_rad == 0.0 || !Finite(scan.laser_pose)) {
+    throw std::invalid_argument("MappingSession::AddScan: the scan needs ranges, finite angle_min_rad and "
+                                "laser_pose, and a finite, non-zero angle_increment_rad");
+  }
+  MappingUpdate update;
+  ++counters_.scans;
+  const int index = scan_calls_++;
+  if (index % options_.throttle_scans != 0) return update;  // gmapping's throttle_scans: every call counts
+  if (last_scan_stamp_s_ && stamp_s <= *last_scan_stamp_s_) {
+    ++counters_.scans_refused;
+    update.scan_refused_reason = "stamp " + std::to_string(stamp_s) + " s is not after the previous scan's " +
+                                 std::to_string(*last_scan_stamp_s_) + " s (time went backwards?)";
+    return update;
+  }
+  const bool temporal = options_.temporal_update_s > 0 && last_processed_stamp_s_ &&
+                        stamp_s - *last_processed_stamp_s_ >= options_.temporal_update_s;
+  update.scan_processed = slam_.AddScan(scan, base_in_odom, index, temporal);
+  update.scan_taken = true;
+  last_scan_stamp_s_ = stamp_s;
+  scans_.push_back({stamp_s, scan});
+  while (scans_.size() > 1 && scans_.front().stamp_s < stamp_s - options_.scan_history_s) scans_.pop_front();
+  if (!update.scan_processed) return update;
+  ++counters_.scans_processed;
+  last_processed_stamp_s_ = stamp_s;
+  processed_scan_indices_.push_back(index);
+  if (options_.map_update_interval_s > 0 &&
+      (!last_solve_stamp_s_ || stamp_s - *last_solve_stamp_s_ >= options_.map_update_interval_s)) {
+    const MappingUpdate solved = Solve();
+    update.solved = solved.solved;
+  }
+  RefreshMapToOdom(&update);
+  return update;
+}
+
+std::optional<double> MappingSession::RangeFor(double stamp_s, double bearing_rad) const {
+  const TimedScan* nearest = nullptr;
+  for (const TimedScan& s : scans_) {  // oldest first: `<=` keeps the newer on ties
+    if (!nearest || std::abs(s.stamp_s - stamp_s) <= std::abs(nearest->stamp_s - stamp_s)) nearest = &s;
+  }
+  if (!nearest || std::abs(nearest->stamp_s - stamp_s) > options_.plate_range_max_scan_age_s) return std::nullopt;
+  return PlateRangeAlongBearing(nearest->scan, bearing_rad, options_.slam.range_beam_window_rad);
+}
+
+MappingUpdate MappingSession::AddPlates(double stamp_s, const Pose2D& base_in_odom,
+                                        const std::vector<PlateSighting>& sightings) {
+  if (!std::isfinite(stamp_s)) throw std::invalid_argument("MappingSession::AddPlates: stamp_s must be finite");
+  if (!Finite(base_in_odom)) throw std::invalid_argument("MappingSession::AddPlates: base_in_odom must be finite");
+  for (const PlateSighting& s : sightings) ValidatePlateSighting(s);  // all or nothing
+  MappingUpdate update;
+  bool used = false;
+  for (const PlateSighting& given : sightings) {
+    ++counters_.plate_sightings;
+    MappingPlateOutcome outcome;
+    outcome.stamp_s = stamp_s;
+    outcome.sighting = given;
+    if (!given.range_m) outcome.sighting.range_m = RangeFor(stamp_s, given.bearing_rad);
+    outcome.result = slam_.AddPlate(outcome.sighting, base_in_odom);
+    if (outcome.result.used()) ++counters_.plates_used, used = true;
+    update.plates.push_back(std::move(outcome));
+  }
+  if (used) RefreshMapToOdom(&update);
+  return update;
+}
+
+MappingUpdate MappingSession::Solve() {
+  MappingUpdate update;
+  if (!started()) return update;
+  slam_.Solve();
+  last_solve_stamp_s_ = last_processed_stamp_s_;
+  map_ = slam_.BuildOccupancyGrid();
+  text_map_ = slam_.BuildTextMap();
+  ++counters_.solves;
+  update.solved = true;
+  RefreshMapToOdom(&update);
+  return update;
+}
+
+void MappingSession::RefreshMapToOdom(MappingUpdate* update) {
+  if (!started()) return;
+  const Pose2D& odom = slam_.slam().LastProcessedOdometry();
+  map_to_odom_ = slam_.EstimatedPose(odom).Compose(odom.Inverse());
+  update->map_to_odom_changed = true;
+}
+
+}  // namespace doorplate_localization
