@@ -75,11 +75,17 @@ add_library(doorplate_mission_bags STATIC src/ros/tools/mission_bags.cpp)
 target_include_directories(doorplate_mission_bags PUBLIC include src/ros/tools PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(doorplate_mission_bags PUBLIC doorplate_common ${catkin_LIBRARIES})
 add_dependencies(doorplate_mission_bags ${PROJECT_NAME}_generate_messages_cpp)  # reads text_detections
+# Its pictures (folded map, per-plate errors, particle spread): ROS-free, OpenCV.
+add_library(doorplate_report_figures STATIC src/ros/tools/report_layout.cpp src/ros/tools/report_figures.cpp)
+target_include_directories(doorplate_report_figures PUBLIC include src/ros/tools PRIVATE ${OpenCV_INCLUDE_DIRS})
+target_link_libraries(doorplate_report_figures PUBLIC doorplate_maps doorplate_common opencv_core PRIVATE opencv_imgproc)
 add_executable(doorplate_mission_report src/ros/tools/mission_report.cpp)
-target_link_libraries(doorplate_mission_report doorplate_mission_bags doorplate_eval_map doorplate_eval_lib
+target_link_libraries(doorplate_mission_report doorplate_mission_bags doorplate_report_figures doorplate_map_measure
                       doorplate_sim doorplate_maps opencv_imgcodecs)
 install(TARGETS doorplate_mission_report RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 if(CATKIN_ENABLE_TESTING)
+  doorplate_add_core_test(report_layout_test test/ros/report_layout_test.cpp doorplate_report_figures)
+  doorplate_add_core_test(report_figures_test test/ros/report_figures_test.cpp doorplate_report_figures)
   catkin_add_gtest(mission_bags_test test/ros/mission_bags_test.cpp)
   target_include_directories(mission_bags_test PRIVATE ${catkin_INCLUDE_DIRS})
   target_link_libraries(mission_bags_test doorplate_mission_bags GTest::gtest_main ${catkin_LIBRARIES})

@@ -9,8 +9,12 @@
 #      read plates and converged; then the patrol stops and the robot is sent to a room by number
 #      (go_to_room) and drives there;
 #   3. report (doorplate_mission_report): report.md with the plates read, the map's length / width
-#      accuracy and plate errors, the localization and go-to-room errors beside the paper's figures, a PNG
-#      of the map with plates and trajectories, and the commands that reproduce the full tables.
+#      accuracy and plate errors, the localization and go-to-room errors beside the paper's figures, the
+#      pictures (map.png: the map folded into segments with plates, paths and magnified plate errors;
+#      plate_errors.png; localization.png: the particles' spread against travel), and the commands that
+#      reproduce the full tables.
+# It builds only the demo's targets (scripts/build.sh --demo) and shows each phase's progress
+# (scripts/mission_progress.py: metres driven and plates read, the particles' spread, the distance left).
 # A world that lists more than one corridor (`corridors:`, e.g. worlds/hospital_floor_ring.yaml) runs the
 # floor mode: mapping explores the whole floor (FloorExplorer), localization searches by following one wall
 # wherever it leads (roam) and go-to-room plans a path over the saved map round corners (route grid), at 2x
@@ -56,7 +60,8 @@ fi
 read -r start_x start_y start_theta <<< "$start"
 [ -n "${start_theta:-}" ] || usage
 build="${DOORPLATE_BUILD:-$repo/build}"   # where scripts/build.sh builds
-bash "$repo/scripts/build.sh" "$build"
+echo "== 0/3 build (only the demo's targets; scripts/test.sh builds everything)"
+bash "$repo/scripts/build.sh" --demo "$build"
 source "$repo/scripts/env.sh" "$build"
 out="$repo/results/demo"; maps="$out/maps"
 rm -rf "$out"; mkdir -p "$maps"
@@ -68,29 +73,28 @@ stop_launch() {
 }
 trap stop_launch EXIT
 
-# topic_value TOPIC: the latest value of a latched std_msgs/String topic ("" if none yet).
-# (10 s: rostopic is a Python program and starts slowly on a loaded machine.)
-topic_value() { timeout -k 1 10 rostopic echo -n 1 -p "$1" 2>/dev/null | tail -n 1 | cut -d, -f2- || true; }
-
-# wait_for TOPIC PATTERN WHAT LOG: polls the topic until its value matches the extended regex PATTERN;
-# the matching value is left in $matched (read once: a second read may time out on a loaded machine).
+# wait_for PHASE TOPIC PATTERN WHAT LOG [CSV]: shows the phase's progress (scripts/mission_progress.py: a line
+# rewritten in place on a terminal, a plain line every 15 s otherwise) until the latched std_msgs/String TOPIC
+# matches the extended regex PATTERN; the matching value is left in $matched. Fails, with the log's end, if
+# roslaunch exits first or nothing matches within $timeout_s.
 matched=""
 wait_for() {
-  local topic="$1" pattern="$2" what="$3" log="$4" deadline=$((SECONDS + timeout_s)) value=""
-  while [ $SECONDS -lt $deadline ]; do
-    value=$(topic_value "$topic")
-    if [[ "$value" =~ $pattern ]]; then echo "   $topic: $value"; matched="$value"; return 0; fi
-    kill -0 "$launch_pid" 2>/dev/null || { echo "roslaunch exited early:"; tail -n 30 "$log"; exit 1; }
-    sleep 1
-  done
-  echo "$what did not happen within ${timeout_s} s ($topic: $value)"; tail -n 30 "$log"; exit 1
+  local phase="$1" topic="$2" pattern="$3" what="$4" log="$5" csv="${6:-}" rc=0
+  matched=$(/usr/bin/python3 "$repo/scripts/mission_progress.py" --phase "$phase" --until "$topic" "$pattern" \
+    --timeout-s "$timeout_s" --pid "$launch_pid" ${csv:+--csv "$csv"}) || rc=$?
+  case "$rc" in
+    0) echo "   $topic: $matched";;
+    3) echo "roslaunch exited early:"; tail -n 30 "$log"; exit 1;;
+    4) echo "$what did not happen within ${timeout_s} s ($topic: $matched)"; tail -n 30 "$log"; exit 1;;
+    *) echo "the progress monitor failed (exit $rc)"; tail -n 30 "$log"; exit 1;;
+  esac
 }
 
 echo "== 1/3 mapping $(basename "$world") with text, seed $seed (log: $out/mapping.log)"
 roslaunch doorplate_localization mapping.launch world:="$world" seed:="$seed" slam_seed:="$seed" $mapping_drive \
   real_time_factor:=$rtf map_output_dir:="$maps" bag:="$out/mapping.bag" > "$out/mapping.log" 2>&1 &
 launch_pid=$!
-wait_for /corridor_follower/state '^done$' "the mapping drive" "$out/mapping.log"
+wait_for mapping /corridor_follower/state '^done$' "the mapping drive" "$out/mapping.log"
 rosservice call /slam_mapping/save_maps | tee "$out/save_maps.txt"
 grep -q "success: True" "$out/save_maps.txt" || { echo "saving the maps failed"; exit 1; }
 stop_launch
@@ -101,10 +105,12 @@ roslaunch doorplate_localization localization.launch world:="$world" seed:="$see
   start_x_m:="$start_x" start_y_m:="$start_y" start_theta_deg:="$start_theta" bag:="$out/localization.bag" \
   > "$out/localization.log" 2>&1 &
 launch_pid=$!
-wait_for /amcl/state '^converged' "global localization" "$out/localization.log"
+wait_for localization /amcl/state '^converged' "global localization" "$out/localization.log" \
+  "$out/particle_spread.csv"
 rosservice call /corridor_follower/enable false > /dev/null
 rostopic pub -1 /go_to_room std_msgs/String "data: '$room'" > /dev/null
-wait_for /go_to_room/status '^(arrived|refused|failed)' "reaching room $room" "$out/localization.log"
+wait_for go_to_room /go_to_room/status '^(arrived|refused|failed)' "reaching room $room" "$out/localization.log" \
+  "$out/particle_spread.csv"
 status="$matched"
 sleep 2  # let the recorder write the last messages
 stop_launch; trap - EXIT
@@ -113,5 +119,5 @@ stop_launch; trap - EXIT
 echo "== 3/3 report"
 "$build/devel/lib/doorplate_localization/doorplate_mission_report" --world "$world" --maps "$maps" \
   --mapping-bag "$out/mapping.bag" --localization-bag "$out/localization.bag" --room "$room" --out "$out" \
-  --title "Simulated mission on $(basename "$world" .yaml), seed $seed"
+  --particle-spread "$out/particle_spread.csv" --title "Simulated mission on $(basename "$world" .yaml), seed $seed"
 cat "$out/report.md"

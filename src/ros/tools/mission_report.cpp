@@ -1,12 +1,16 @@
 // doorplate_mission_report: the report of a simulated mission (scripts/demo.sh): mapping with text, then
 // global localization from an unknown pose and going to a room. Reads the two bags, the world and the saved
 // maps; writes DIR/report.md (this run's figures beside the paper's Tables I-III, and the commands that
-// reproduce the full tables) and DIR/map.png (the saved map with the true and mapped plates and the paths).
+// reproduce the full tables) and its pictures (report_figures.h): DIR/map.png (the saved map, folded when
+// long, with the paths, the true and mapped plates and their errors as magnified arrows),
+// DIR/plate_errors.png (per-plate errors) and, given the particle spread log that scripts/mission_progress.py
+// writes (--particle-spread), DIR/localization.png (the particles' spread against the distance driven).
 // Frames: the SLAM's map frame is its odometry frame (rbpf_slam.h), so world_from_map is the true pose
 // composed with the inverse odometry pose at the mapping run's start.
 // Usage: doorplate_mission_report --world W.yaml --maps DIR --mapping-bag B1 --localization-bag B2 --room R
-//                                 --out DIR [--title TEXT]
+//                                 --out DIR [--particle-spread CSV] [--title TEXT]
 // Exit codes: 0 written, 1 bad input (named), 2 bad command line.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -26,8 +30,8 @@
 #include "doorplate_localization/sim/world_loader.h"
 #include "floor_measure.h"
 #include "map_measure.h"
-#include "map_overlay.h"
 #include "mission_bags.h"
+#include "report_figures.h"
 
 namespace dl = doorplate_localization;
 
@@ -36,14 +40,14 @@ namespace {
 constexpr double kRadToDeg = 180.0 / M_PI;
 
 struct Args {
-  std::string world, maps, mapping_bag, localization_bag, room, out, title = "Simulated mission";
+  std::string world, maps, mapping_bag, localization_bag, room, out, particle_spread, title = "Simulated mission";
 };
 
 bool ParseArgs(int argc, char** argv, Args* a) {
   const std::map<std::string, std::string*> fields{
       {"--world", &a->world}, {"--maps", &a->maps}, {"--mapping-bag", &a->mapping_bag},
       {"--localization-bag", &a->localization_bag}, {"--room", &a->room}, {"--out", &a->out},
-      {"--title", &a->title}};
+      {"--particle-spread", &a->particle_spread}, {"--title", &a->title}};
   if (argc % 2 == 0) return false;
   for (int i = 1; i + 1 < argc; i += 2) {
     const auto it = fields.find(argv[i]);
@@ -72,6 +76,21 @@ std::vector<dl::Vec2> Positions(const std::vector<dl::StampedPose>& track, const
   std::vector<dl::Vec2> points;
   for (const dl::StampedPose& p : track) points.push_back(transform.TransformPoint(p.pose.Position()));
   return points;
+}
+
+void WritePng(const std::string& path, const cv::Mat& image) {
+  std::vector<unsigned char> png;
+  if (!cv::imencode(".png", image, png)) throw std::runtime_error(path + ": cannot encode");
+  dl::WriteFileAtomically(path, std::string(png.begin(), png.end()));
+}
+
+// Rows by room number ("9" before "10": shorter canonical ids first, then alphabetically).
+std::vector<dl::PlateErrorRow> SortedByRoom(std::vector<dl::PlateErrorRow> rows) {
+  std::stable_sort(rows.begin(), rows.end(), [](const dl::PlateErrorRow& a, const dl::PlateErrorRow& b) {
+    const std::string x = dl::CanonicalRoomId(a.text), y = dl::CanonicalRoomId(b.text);
+    return x.size() != y.size() ? x.size() < y.size() : x < y;
+  });
+  return rows;
 }
 
 }  // namespace
@@ -105,7 +124,7 @@ int main(int argc, char** argv) {
   Args args;
   if (!ParseArgs(argc, argv, &args)) {
     std::cerr << "usage: doorplate_mission_report --world W.yaml --maps DIR --mapping-bag B1 --localization-bag B2"
-                 " --room R --out DIR [--title TEXT]\n";
+                 " --room R --out DIR [--particle-spread CSV] [--title TEXT]\n";
     return 2;
   }
   try {
@@ -178,25 +197,38 @@ int main(int argc, char** argv) {
                   << "| facing error (heading vs the door) | " << facing_error << " deg |\n";
     }
 
-    // --- picture ---
-    dl::MapOverlay overlay;
-    overlay.paths.push_back({Positions(mapping.truth, map_from_world), cv::Scalar(200, 120, 0), 1});
-    overlay.paths.push_back({Positions(localization.truth, map_from_world), cv::Scalar(0, 150, 0), 1});
-    overlay.paths.push_back({Positions(localization.estimate, dl::Pose2D()), cv::Scalar(200, 0, 200), 2});
-    for (const dl::TextLandmark& l : truth_plates.landmarks) {
-      overlay.marks.push_back({map_from_world.TransformPoint(l.pose.Position()), "", cv::Scalar(0, 170, 0), true});
+    // --- pictures (report_figures.h) ---
+    const std::vector<dl::PlateErrorRow> plate_rows = dl::PairPlates(mapped, truth_plates, map_from_world);
+    dl::MapFigure figure;
+    figure.title = "Saved map of " + world.name + ": paths, plates and their errors";
+    figure.paths.push_back({Positions(mapping.truth, map_from_world), cv::Scalar(200, 120, 0), 2, "mapping path (true)"});
+    figure.paths.push_back({Positions(localization.truth, map_from_world), cv::Scalar(0, 150, 0), 2,
+                            "localization + go-to-room path (true)"});
+    figure.paths.push_back({Positions(localization.estimate, dl::Pose2D()), cv::Scalar(200, 0, 200), 1,
+                            "amcl_pose (the localizer's estimate)"});
+    figure.poses.push_back({map_from_world.Compose(start), cv::Scalar(0, 120, 0), "localization start"});
+    figure.poses.push_back({map_from_world.Compose(final_pose), cv::Scalar(20, 20, 20), "final pose"});
+    figure.plates = plate_rows;
+    WritePng(args.out + "/map.png", dl::DrawMapFigure(grid, figure));
+    WritePng(args.out + "/plate_errors.png",
+             dl::DrawPlateErrorChart(SortedByRoom(plate_rows), "Plate position errors in the saved text map (" +
+                                                     std::to_string(plate_score.plates_mapped) + " of " +
+                                                     std::to_string(plate_score.plates_true) + " plates mapped)"));
+    std::string spread_note;
+    if (!args.particle_spread.empty()) {
+      const std::vector<dl::SpreadSample> spread = dl::ReadSpreadLog(args.particle_spread);
+      if (spread.empty()) throw std::runtime_error(args.particle_spread + ": no samples");
+      std::vector<dl::SpreadEvent> readings;
+      for (const dl::PlateReadEvent& r : localization.plates) {
+        readings.push_back({r.time_s, r.text});
+      }
+      WritePng(args.out + "/localization.png",
+               dl::DrawSpreadPlot(spread, readings, t_converged,
+                                  "Global localization: the particles' spread against the distance driven"));
+      spread_note = "\n![particle spread against travel](localization.png)\n\nThe particles' spread (RMS distance "
+                    "from their mean, from `particlecloud`) against the distance driven; red ticks: plates read; "
+                    "dashed: the localizer said converged.\n";
     }
-    for (const dl::TextLandmark& l : mapped.landmarks) {
-      const bool upper = std::sin(l.pose.theta_rad) < 0.0;  // faces down: on the upper wall
-      overlay.marks.push_back({l.pose.Position(), l.text, cv::Scalar(0, 0, 220), false, !upper});
-    }
-    overlay.robots.push_back(map_from_world.Compose(final_pose));
-    overlay.legend = "blue: mapping path  green: localization path (true)  magenta: amcl_pose  "
-                     "red: mapped plates  green x: true plates";
-    const std::string png_path = args.out + "/map.png";
-    std::vector<unsigned char> png;
-    if (!cv::imencode(".png", dl::DrawMapOverlay(grid, overlay, 4), png)) throw std::runtime_error(png_path + ": cannot encode");
-    dl::WriteFileAtomically(png_path, std::string(png.begin(), png.end()));
 
     // --- report ---
     std::ostringstream md;
@@ -221,6 +253,7 @@ int main(int argc, char** argv) {
       for (const std::string& t : read_wrong) md << " " << t;
       md << "\n";
     }
+    md << "\n![per-plate errors](plate_errors.png)\n";
     md << "\n## 2. Global localization from an unknown pose (paper Sec. 3.4; Table III)\n\n"
        << "The robot started at (" << start.x_m << ", " << start.y_m << ", " << start.theta_rad * kRadToDeg
        << " deg) in the world, unknown to Text AMCL, which started with global localization on the saved maps "
@@ -235,6 +268,7 @@ int main(int argc, char** argv) {
          << "| success (within 0.3 m and 10 deg) | " << (converge_error_m <= 0.3 && converge_error_deg <= 10.0 ? "yes" : "no")
          << " |\n";
     }
+    md << spread_note;
     md << "\nPaper, Table III (30 start poses): AMCL 40.0 %, Text+AMCL 93.3 % success.\n\n"
        << "## 3. Go to room " << args.room << " (paper Sec. 3.4, Fig. 8)\n\n| figure | this run |\n|---|---|\n"
        << "| arrived | " << (t_arrived >= 0.0 ? "yes, after " : "no");
