@@ -87,7 +87,7 @@ class GoToRoomNodelet : public nodelet::Nodelet {
       path_pub_ = pnh.advertise<nav_msgs::Path>("path", 1, /*latch=*/true);
       if (!building_) map_sub_ = nh.subscribe("map", 1, &GoToRoomNodelet::OnMap, this);
     } else if (options_.text_fallback) {
-      detections_sub_ = nh.subscribe("text_detections", 10, &GoToRoomNodelet::OnDetections, this);
+      detections_sub_ = nh.subscribe("text_detections", kTextDetectionsQueueSize, &GoToRoomNodelet::OnDetections, this);
     }
     watchdog_ = nh.createTimer(ros::Duration(options_.scan_timeout_s), &GoToRoomNodelet::OnWatchdog, this);
     NODELET_INFO("go to room: %zu plates from %s (rooms: %zu)", options_.text_map.landmarks.size(),

@@ -48,6 +48,7 @@
 #include "doorplate_localization/ros/map_conversions.h"
 #include "doorplate_localization/ros/pose_conversions.h"
 #include "doorplate_localization/ros/slam_conversions.h"
+#include "doorplate_localization/ros/text_detection_conversions.h"
 #include "doorplate_localization/slam/mapping_session.h"
 #include "slam_mapping_options.h"
 
@@ -104,7 +105,7 @@ class SlamMappingNodelet : public nodelet::Nodelet {
         });
     if (options_.use_text) {
       detections_topic_ = nh.resolveName("text_detections");
-      detections_sub_ = nh.subscribe("text_detections", 10, &SlamMappingNodelet::OnDetections, this);
+      detections_sub_ = nh.subscribe("text_detections", kTextDetectionsQueueSize, &SlamMappingNodelet::OnDetections, this);
     }
     if (options_.transform_publish_period_s > 0.0) {
       tf_timer_ = nh.createTimer(ros::Duration(options_.transform_publish_period_s), &SlamMappingNodelet::OnTfTimer,

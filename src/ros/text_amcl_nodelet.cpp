@@ -108,7 +108,7 @@ class TextAmclNodelet : public nodelet::Nodelet {
     }
     initial_pose_sub_ = nh.subscribe("initialpose", 2, &TextAmclNodelet::OnInitialPose, this);
     scan_sub_ = nh.subscribe("scan", 1, &TextAmclNodelet::OnScan, this);
-    detections_sub_ = nh.subscribe("text_detections", 10, &TextAmclNodelet::OnDetections, this);
+    detections_sub_ = nh.subscribe("text_detections", kTextDetectionsQueueSize, &TextAmclNodelet::OnDetections, this);
     if (options_.save_pose_rate_hz > 0.0) {
       save_timer_ = nh.createTimer(ros::Duration(1.0 / options_.save_pose_rate_hz), &TextAmclNodelet::SavePose, this);
     }

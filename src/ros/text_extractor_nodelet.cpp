@@ -20,6 +20,7 @@
 #include <ros/ros.h>
 
 #include "doorplate_localization/ros/text_conversions.h"
+#include "doorplate_localization/ros/text_detection_conversions.h"
 #include "text_extractor_options.h"
 
 namespace doorplate_localization {
@@ -43,7 +44,7 @@ class TextExtractorNodelet : public nodelet::Nodelet {
     // Under connect_mutex_: a subscriber may connect before both publishers are assigned.
     std::lock_guard<std::mutex> lock(connect_mutex_);
     const ros::SubscriberStatusCallback on_connect = [this](const ros::SingleSubscriberPublisher&) { OnConnect(); };
-    detections_pub_ = nh.advertise<TextDetectionArray>("text_detections", 10, on_connect, on_connect);
+    detections_pub_ = nh.advertise<TextDetectionArray>("text_detections", kTextDetectionsQueueSize, on_connect, on_connect);
     debug_pub_ = pnh.advertise<sensor_msgs::Image>("debug_image", 1, on_connect, on_connect);
     NODELET_INFO("text extractor: Tesseract '%s' from %s, %zu known rooms; waiting for subscribers",
                  options_.ocr.language.c_str(), ResolveTessdataDir(options_.ocr).c_str(),

@@ -54,7 +54,7 @@ class WallFollowerNodelet : public nodelet::Nodelet {
     width_pub_ = pnh.advertise<std_msgs::Float32>("corridor_width", 1);
     enable_srv_ = pnh.advertiseService("enable", &WallFollowerNodelet::OnEnable, this);
     scan_sub_ = nh.subscribe("scan", 1, &WallFollowerNodelet::OnScan, this);
-    if (explorer_) detections_sub_ = nh.subscribe("text_detections", 10, &WallFollowerNodelet::OnDetections, this);
+    if (explorer_) detections_sub_ = nh.subscribe("text_detections", kTextDetectionsQueueSize, &WallFollowerNodelet::OnDetections, this);
     watchdog_ = nh.createTimer(ros::Duration(options_.scan_timeout_s), &WallFollowerNodelet::OnWatchdog, this);
     PublishState(enabled_ ? "waiting_for_scan" : "disabled");
   }

@@ -11,6 +11,12 @@
 
 namespace doorplate_localization {
 
+// Queue length of every text_detections publisher and subscriber. The extractor publishes one array per
+// camera frame, nearly all empty; a consumer busy for a while (the SLAM's solve takes ~1 s, more on a loaded
+// machine, and the sim may run at 5x) must not lose the one array that holds a plate report to the empty
+// ones behind it. 200 arrays are 20 s of a 10 Hz camera and a few kB.
+constexpr unsigned int kTextDetectionsQueueSize = 200;
+
 // True for the text extractor's one report per plate: a detection that crossed the image centre with a
 // non-empty text (an empty text is a rejected reading). Consumers use only these.
 bool IsPlateReport(const TextDetection& msg);
