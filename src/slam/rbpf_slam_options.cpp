@@ -104,6 +104,11 @@ const TextField kTextFields[] = {
     {"back_end.icp.min_inlier_fraction", [](T& o) { return &o.back_end.icp.min_inlier_fraction; }},
     {"back_end.icp.normal_neighbours", nullptr, [](T& o) { return &o.back_end.icp.normal_neighbours; }},
     {"back_end.icp.normal_gap_per_m", [](T& o) { return &o.back_end.icp.normal_gap_per_m; }},
+    {"back_end.icp.degenerate_min_fraction", [](T& o) { return &o.back_end.icp.degenerate_min_fraction; }},
+    {"back_end.icp.share_reference_points", nullptr, nullptr,
+     [](T& o) { return &o.back_end.icp.share_reference_points; }},
+    {"back_end.icp.skip_points_nearest_no_line", nullptr, nullptr,
+     [](T& o) { return &o.back_end.icp.skip_points_nearest_no_line; }},
     {"back_end.graph.scale_prior_sigma", [](T& o) { return &o.back_end.graph.scale_prior_sigma; }},
     {"back_end.graph.estimate_odometry_scale", nullptr, nullptr, [](T& o) { return &o.back_end.graph.estimate_odometry_scale; }},
 };

@@ -23,6 +23,9 @@ const SlamBackEndOptions& Validated(const SlamBackEndOptions& o) {
   if (!(o.odometry_min_sigma_m > 0) || !(o.odometry_min_sigma_rad > 0)) fail("odometry_min_sigma_*: must be > 0");
   if (!(o.plate_sigma_m > 0)) fail("plate_sigma_m: must be > 0");
   if (!(o.icp.point_sigma_m > 0) || !(o.icp.effective_points > 0)) fail("icp: point_sigma_m and effective_points must be > 0");
+  if (!(o.icp.degenerate_min_fraction >= 0 && o.icp.degenerate_min_fraction < 1)) {
+    fail("icp.degenerate_min_fraction: must be in [0, 1)");
+  }
   if (!(o.graph.scale_prior_sigma > 0)) fail("graph.scale_prior_sigma: must be > 0");
   return o;
 }

@@ -115,5 +115,87 @@ TEST(ScanIcp, TooFewOverlappingPointsAreNotAligned) {
   EXPECT_TRUE(AlignScans(whole, room, {0, 0, 0}, options).aligned);
 }
 
+TEST(ScanIcp, AQueryPointWhoseNearestEchoHasNoLineGetsNoCorrespondence) {
+  // A wall along y = -1 (a line at every echo) and, 0.2 m above it, a clump of clutter: three echoes in
+  // beam order that are too far apart to make a line (each has fewer than 3 neighbours within the gap).
+  std::vector<Vec2> points;
+  for (int i = 0; i <= 40; ++i) points.push_back({-2.0 + 0.1 * i, -1.0});
+  const std::vector<Vec2> clutter = {{0.0, -0.8}, {0.3, -0.5}, {-0.3, -0.5}};
+  points.insert(points.end(), clutter.begin(), clutter.end());
+  ScanIcpOptions options;
+  options.normal_gap_m = 0.15;
+  options.normal_gap_per_m = 0.0;
+  const IcpReference reference(points, options);
+  ASSERT_EQ(reference.size(), 39);  // the clutter and the wall's two ends (one neighbour each) have none
+  // Right at the clutter echo: the wall point 0.2 m below it is the nearest point with a line...
+  const int k = reference.Nearest({0.0, -0.8}, 0.3);
+  ASSERT_GE(k, 0);
+  EXPECT_NEAR(reference.points()[k].y, -1.0, 1e-12);
+  // ...but the nearest echo is the clutter, which has none: no correspondence.
+  EXPECT_EQ(reference.NearestIfLine({0.0, -0.8}, 0.3), -1);
+  // Near the wall the nearest echo is a wall point: the same answer as Nearest.
+  EXPECT_EQ(reference.NearestIfLine({0.05, -0.95}, 0.3), reference.Nearest({0.05, -0.95}, 0.3));
+  EXPECT_EQ(reference.NearestIfLine({0.0, 2.0}, 0.3), -1);  // nothing within reach
+}
+
+TEST(ScanIcp, EachReferencePointWeighsOnceHoweverManyQueryPointsItServes) {
+  // The query is the reference scan with every east-wall echo (x = 3.025) taken 8 times: a surface seen
+  // far more densely than the rest. Shared, each reference point still weighs once, so the information is
+  // that of the plain scan; counted, the east wall's x-normals outvote the other walls.
+  const std::vector<Vec2> scan = PointsAt(test::Room(), {0, 0, 0}, 180);
+  std::vector<Vec2> query;
+  for (const Vec2& p : scan) {
+    for (int copy = 0; copy < (p.x > 3.0 ? 8 : 1); ++copy) query.push_back(p);
+  }
+  ASSERT_GT(query.size(), scan.size() + 50);
+  ScanIcpOptions shared, counted;
+  shared.share_reference_points = true;
+  counted.share_reference_points = false;
+  const IcpReference reference(scan, shared);
+  const ScanIcpResult with_sharing = AlignScans(reference, query, {0, 0, 0}, shared);
+  const ScanIcpResult without = AlignScans(reference, query, {0, 0, 0}, counted);
+  const ScanIcpResult plain = AlignScans(reference, scan, {0, 0, 0}, counted);  // one query point each
+  ASSERT_TRUE(with_sharing.aligned && without.aligned && plain.aligned);
+  EXPECT_TRUE(with_sharing.information.isApprox(plain.information, 1e-6))
+      << with_sharing.information << "\nvs\n" << plain.information;
+  const auto ratio = [](const ScanIcpResult& r) { return r.information(0, 0) / r.information(1, 1); };
+  EXPECT_GT(ratio(without), 1.5 * ratio(plain));
+  EXPECT_NEAR(with_sharing.relative.x_m, 0.0, 1e-6);
+  EXPECT_NEAR(with_sharing.relative.y_m, 0.0, 1e-6);
+}
+
+TEST(ScanIcp, AWeakAlongCorridorConstraintIsTreatedAsNone) {
+  // A featureless corridor and a small box (a person walking with the robot) 2 m ahead of the robot in
+  // both scans: the robot moved 0.3 m, the box too. The box is the only thing that says anything about
+  // x, and it says "no motion". Its few echoes are below `degenerate_min_fraction` of the weight: the
+  // alignment keeps the guess along the corridor and reports no information there.
+  const auto box_at = [](double x) {
+    return std::vector<Segment>{{{x, -0.5}, {x + 0.15, -0.5}}, {{x + 0.15, -0.5}, {x + 0.15, -0.35}},
+                                {{x + 0.15, -0.35}, {x, -0.35}}, {{x, -0.35}, {x, -0.5}}};
+  };
+  std::vector<Segment> reference_world = test::Corridor(), query_world = test::Corridor();
+  for (const Segment& s : box_at(2.0)) reference_world.push_back(s);
+  for (const Segment& s : box_at(2.3)) query_world.push_back(s);
+  const Pose2D truth{0.3, 0.0, 0.0};
+  ScanIcpOptions degenerate_aware, plain;
+  degenerate_aware.degenerate_min_fraction = 0.02;
+  plain.degenerate_min_fraction = 0.0;
+  const IcpReference reference(PointsAt(reference_world, {0, 0, 0}), plain);
+  const std::vector<Vec2> query = PointsAt(query_world, truth);
+
+  const ScanIcpResult kept = AlignScans(reference, query, truth, degenerate_aware);
+  ASSERT_TRUE(kept.aligned);
+  EXPECT_NEAR(kept.relative.x_m, truth.x_m, 1e-4);   // along: the guess, untouched
+  EXPECT_NEAR(kept.relative.y_m, truth.y_m, 0.005);  // across and in heading: the walls
+  EXPECT_NEAR(kept.relative.theta_rad, 0.0, 0.002);
+  EXPECT_NEAR(kept.information(0, 0), 0.0, 1e-6 * kept.information(1, 1));
+
+  // Without the test the box drags the estimate back towards "no motion", with confidence.
+  const ScanIcpResult dragged = AlignScans(reference, query, truth, plain);
+  ASSERT_TRUE(dragged.aligned);
+  EXPECT_LT(dragged.relative.x_m, truth.x_m - 0.1);
+  EXPECT_GT(dragged.information(0, 0), 10.0);  // σ < 0.3 m claimed
+}
+
 }  // namespace
 }  // namespace doorplate_localization

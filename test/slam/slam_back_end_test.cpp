@@ -150,6 +150,9 @@ TEST(SlamBackEnd, BadOptionsThrowNamingTheField) {
   o.loop_closure_min_separation = 0;
   ExpectThrowNaming(o, "SlamBackEndOptions.loop_closure_min_separation");
   o = {};
+  o.icp.degenerate_min_fraction = 1.0;
+  ExpectThrowNaming(o, "SlamBackEndOptions.icp.degenerate_min_fraction");
+  o = {};
   o.icp.min_inlier_fraction = 1.5;
   ExpectThrowNaming(o, "SlamBackEndOptions.icp.min_inlier_fraction");
   o = {};
