@@ -121,10 +121,18 @@ std::string ExtentRows(const std::vector<dl::CorridorAccuracy>& corridors, const
 }
 
 int main(int argc, char** argv) {
+  const char* usage =
+      "usage: doorplate_mission_report --world W.yaml --maps DIR --mapping-bag B1 --localization-bag B2"
+      " --room R --out DIR [--particle-spread CSV] [--title TEXT]\n";
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
+      std::cout << usage;
+      return 0;
+    }
+  }
   Args args;
   if (!ParseArgs(argc, argv, &args)) {
-    std::cerr << "usage: doorplate_mission_report --world W.yaml --maps DIR --mapping-bag B1 --localization-bag B2"
-                 " --room R --out DIR [--particle-spread CSV] [--title TEXT]\n";
+    std::cerr << usage;
     return 2;
   }
   try {
