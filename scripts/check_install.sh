@@ -6,14 +6,18 @@
 #   3. a tool works on the installed data (doorplate_world_maps on an installed world);
 #   4. roslaunch doorplate_localization demo.launch (rviz off) loads every nodelet through pluginlib from
 #      PREFIX and localizes: /amcl/state says converged within the timeout.
-# Usage: scripts/check_install.sh [BUILD_DIR] [PREFIX]   (defaults: <repo>/build, BUILD_DIR/install)
+# Usage: scripts/check_install.sh [BUILD_DIR] [PREFIX]   (defaults: <repo>/build, a temporary folder removed
+# afterwards; a PREFIX given is kept and must lie outside the source tree)
 # BUILD_DIR must have been configured by scripts/build.sh; this sets its CMAKE_INSTALL_PREFIX to PREFIX.
 set -euo pipefail
 repo="$(cd "$(dirname "$0")/.." && pwd)"
 build="${1:-$repo/build}"
 build="$(mkdir -p "$build" && cd "$build" && pwd)"
-prefix="${2:-$build/install}"
+# Default: a throwaway prefix outside the source tree (rospack crawls ROS_PACKAGE_PATH, which holds the
+# repo: an install space inside it would be a second doorplate_localization package for roslaunch).
+if [ -n "${2:-}" ]; then prefix="$2"; keep=1; else prefix="$(mktemp -d "${TMPDIR:-/tmp}/doorplate_install.XXXXXX")"; keep=0; fi
 mkdir -p "$prefix" && prefix="$(cd "$prefix" && pwd)"
+case "$prefix/" in "$repo/"*) echo "check_install: PREFIX $prefix is inside the source tree; rospack would find two packages" >&2; exit 2;; esac
 timeout_s="${DOORPLATE_INSTALL_CHECK_TIMEOUT_S:-300}"
 [ -f "$build/CMakeCache.txt" ] || { echo "check_install: $build is not configured (run scripts/build.sh $build)" >&2; exit 2; }
 
@@ -26,7 +30,7 @@ cmake --build "$build" --target install -- -j2 > "$build.install.log" 2>&1 \
 
 # The rest runs with nothing of the source tree or the devel space: only PREFIX and /usr.
 work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
+trap 'rm -rf "$work"; [ "$keep" = 1 ] || rm -rf "$prefix"' EXIT
 env -i HOME="$work" TERM="${TERM:-dumb}" PATH=/usr/bin:/bin PREFIX="$prefix" WORK="$work" TIMEOUT_S="$timeout_s" \
   bash --noprofile --norc -c '
 set -euo pipefail

@@ -94,9 +94,12 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     save_srv_ = pnh.advertiseService("save_maps", &SlamMappingNodelet::OnSaveMaps, this);
 
     scan_topic_ = nh.resolveName("scan");
-    scan_sub_.subscribe(nh, "scan", 5);
+    // Queues of kScanQueueSize: a back-end solve holds this nodelet for ~1 s (more on a loaded machine, 5x
+    // that in sim time at 5x real time); the scans received meanwhile must not be dropped, or a plate read in
+    // that time finds no scan near its stamp for its range (the live demo lost 4 of 16 plates so).
+    scan_sub_.subscribe(nh, "scan", kScanQueueSize);
     scan_filter_ = std::make_unique<tf2_ros::MessageFilter<sensor_msgs::LaserScan>>(
-        scan_sub_, *tf_buffer_, options_.odom_frame, 10, nh);
+        scan_sub_, *tf_buffer_, options_.odom_frame, kScanQueueSize, nh);
     scan_filter_->registerCallback(&SlamMappingNodelet::OnScan, this);
     scan_filter_->registerFailureCallback(
         [this](const sensor_msgs::LaserScan::ConstPtr& scan, tf2_ros::filter_failure_reasons::FilterFailureReason) {
@@ -269,6 +272,7 @@ class SlamMappingNodelet : public nodelet::Nodelet {
   std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
+  static constexpr uint32_t kScanQueueSize = 100;  // 10 s of a 10 Hz laser
   message_filters::Subscriber<sensor_msgs::LaserScan> scan_sub_;
   std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::LaserScan>> scan_filter_;
   ros::Subscriber detections_sub_;

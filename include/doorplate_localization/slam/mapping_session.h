@@ -54,7 +54,8 @@ struct MappingSessionOptions {
   double map_update_interval_s = 0.0;        // > 0: Solve() after a processed scan this long after the last solve;
                                              // 0: only when the caller calls Solve()
   double plate_range_max_scan_age_s = 0.5;   // range from a scan at most this far in time from the sighting
-  double scan_history_s = 2.0;               // scans kept this long (newest's stamp) for late sightings' ranges
+  double scan_history_s = 10.0;              // scans kept this long (newest's stamp) for late sightings' ranges
+                                             // (an OCR report arrives seconds after its image on a busy machine)
 };
 
 // Throws std::invalid_argument naming the field ("MappingSessionOptions.throttle_scans ...", or
