@@ -7,7 +7,8 @@
 // (a refused map changes nothing: amcl_pose flows on, ~state and the latched map stay), ~state and
 // /diagnostics, and a second localizer (/late, no map yet) that queues global_localization until its map.
 // Every wait is on a condition with a wall-clock timeout. The cases run in order: the drive starts in the
-// global localization case.
+// global localization case. Over 400 lines because the cases share one running graph (one ROS master and a
+// converged filter are expensive to start): splitting them into several .test files would restart all of it.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
