@@ -107,13 +107,15 @@ Row Measure(const std::shared_ptr<const LocalizationGrid>& grid, int particles, 
 
 }  // namespace
 
+constexpr char kUsage[] = "usage: doorplate_mcl_bench [--iterations N] [--markdown OUT.md]\n";
+
 int main(int argc, char** argv) {
   int iterations = 200;
   std::string markdown;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") {
-      std::cout << "usage: doorplate_mcl_bench [--iterations N] [--markdown OUT.md]\n";
+      std::cout << kUsage;
       return 0;
     }
     if (arg == "--iterations" && i + 1 < argc) {
@@ -121,7 +123,7 @@ int main(int argc, char** argv) {
     } else if (arg == "--markdown" && i + 1 < argc) {
       markdown = argv[++i];
     } else {
-      std::cerr << "usage: doorplate_mcl_bench [--iterations N] [--markdown OUT.md]\n";
+      std::cerr << kUsage;
       return 2;
     }
   }

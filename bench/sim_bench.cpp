@@ -60,6 +60,8 @@ Result RunCase(const World& world_file, const Case& c, double seconds, std::uint
 
 }  // namespace
 
+constexpr char kUsage[] = "usage: doorplate_sim_bench [--world FILE] [--seconds S] [--seed N] [--markdown OUT.md]\n";
+
 int main(int argc, char** argv) {
   std::string world_file = std::string(DOORPLATE_SOURCE_DIR) + "/worlds/paper_real_corridor.yaml";
   std::string markdown;
@@ -75,7 +77,7 @@ int main(int argc, char** argv) {
       return argv[++i];
     };
     if (arg == "--help" || arg == "-h") {
-      std::cout << "usage: doorplate_sim_bench [--world FILE] [--seconds S] [--seed N] [--markdown OUT.md]\n";
+      std::cout << kUsage;
       return 0;
     }
     if (arg == "--world") world_file = value();
@@ -83,7 +85,7 @@ int main(int argc, char** argv) {
     else if (arg == "--seed") seed = std::stoull(value());
     else if (arg == "--markdown") markdown = value();
     else {
-      std::cerr << "usage: doorplate_sim_bench [--world FILE] [--seconds S] [--seed N] [--markdown OUT.md]\n";
+      std::cerr << kUsage;
       return 2;
     }
   }
