@@ -1,7 +1,11 @@
 #include "doorplate_localization/slam/slam_back_end.h"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
+#include <set>
+#include <utility>
 #include <stdexcept>
 #include <string>
 
@@ -15,6 +19,10 @@ const SlamBackEndOptions& Validated(const SlamBackEndOptions& o) {
   if (!(o.loop_closure_radius_m >= 0)) fail("loop_closure_radius_m: must be >= 0");
   if (o.loop_closure_min_separation < 1) fail("loop_closure_min_separation: must be >= 1");
   if (!(o.loop_closure_max_rms_m > 0)) fail("loop_closure_max_rms_m: must be > 0");
+  if (o.loop_closure_max_tries < 1) fail("loop_closure_max_tries: must be >= 1");
+  if (o.loop_closures_per_node < 1) fail("loop_closures_per_node: must be >= 1");
+  if (!(o.sequential_gate_sigmas >= 0)) fail("sequential_gate_sigmas: must be >= 0 (0: off)");
+  if (o.front_end_pinned_neighbours < 0) fail("front_end_pinned_neighbours: must be >= 0");
   if (!(o.icp.min_inlier_fraction > 0 && o.icp.min_inlier_fraction <= 1)) fail("icp.min_inlier_fraction: must be in (0, 1]");
   for (double v : {o.odometry_trans_m2_per_m, o.odometry_trans_m2_per_rad, o.odometry_rot_rad2_per_m,
                    o.odometry_rot_rad2_per_rad}) {
@@ -32,10 +40,35 @@ const SlamBackEndOptions& Validated(const SlamBackEndOptions& o) {
 
 }  // namespace
 
+std::vector<std::vector<int>> SlamBackEnd::LoopClosureCandidates(
+    int n, const std::function<const Pose2D&(int)>& pose_of) const {
+  std::vector<std::vector<int>> candidates(n);
+  if (!(options_.loop_closure_radius_m > 0)) return candidates;
+  const int separation = options_.loop_closure_min_separation;
+  for (int j = separation; j < n; ++j) {
+    std::vector<std::pair<double, int>> near;  // (distance, node)
+    for (int i = 0; i + separation <= j; ++i) {
+      const double d = Norm(pose_of(i).Position() - pose_of(j).Position());
+      if (d < options_.loop_closure_radius_m) near.emplace_back(d, i);
+    }
+    std::sort(near.begin(), near.end());
+    // The nearest node of each earlier visit: a candidate within separation / 2 nodes of a nearer one is
+    // the same visit seen a step later.
+    for (const auto& [d, i] : near) {
+      bool same_visit = false;
+      for (int k : candidates[j]) same_visit = same_visit || std::abs(k - i) < std::max(1, separation / 2);
+      if (!same_visit) candidates[j].push_back(i);
+      if (static_cast<int>(candidates[j].size()) >= options_.loop_closure_max_tries) break;
+    }
+  }
+  return candidates;
+}
+
 SlamBackEnd::SlamBackEnd(const SlamBackEndOptions& options) : options_(Validated(options)) {}
 
-void SlamBackEnd::AddNode(std::vector<Vec2> points, const Pose2D& odometry_pose, const Pose2D& front_end_pose) {
-  nodes_.push_back({std::move(points), odometry_pose, front_end_pose, std::nullopt});
+void SlamBackEnd::AddNode(std::vector<Vec2> points, const Pose2D& odometry_pose, const Pose2D& front_end_pose,
+                          bool front_end_pinned) {
+  nodes_.push_back({std::move(points), odometry_pose, front_end_pose, front_end_pinned, std::nullopt});
 }
 
 void SlamBackEnd::AddPlateReading(int plate_id, int node, const Vec2& in_node_frame) {
@@ -50,6 +83,21 @@ const IcpReference& SlamBackEnd::Reference(int node) const {
   Node& n = nodes_[node];
   if (!n.reference) n.reference.emplace(n.points, options_.icp);
   return *n.reference;
+}
+
+bool SlamBackEnd::AgreesWithOdometry(const Pose2D& odometry, const Pose2D& aligned) const {
+  if (!(options_.sequential_gate_sigmas > 0)) return true;
+  const double d = std::hypot(odometry.x_m, odometry.y_m);
+  const double turn = std::abs(odometry.theta_rad);
+  const double scale_var = options_.graph.scale_prior_sigma * options_.graph.scale_prior_sigma * d * d;
+  const double var_t = options_.odometry_trans_m2_per_m * d + options_.odometry_trans_m2_per_rad * turn +
+                       options_.odometry_min_sigma_m * options_.odometry_min_sigma_m + scale_var;
+  const double var_r = options_.odometry_rot_rad2_per_m * d + options_.odometry_rot_rad2_per_rad * turn +
+                       options_.odometry_min_sigma_rad * options_.odometry_min_sigma_rad;
+  const double dx = aligned.x_m - odometry.x_m, dy = aligned.y_m - odometry.y_m;
+  const double dtheta = NormalizeAngle(aligned.theta_rad - odometry.theta_rad);
+  const double gate = options_.sequential_gate_sigmas * options_.sequential_gate_sigmas;
+  return (dx * dx + dy * dy) / var_t <= gate && dtheta * dtheta / var_r <= gate;
 }
 
 PoseEdge SlamBackEnd::OdometryEdge(int from, int to) const {
@@ -72,6 +120,7 @@ std::optional<PoseEdge> SlamBackEnd::Align(int from, int to, const Pose2D& initi
   const ScanIcpResult r = AlignScans(Reference(from), nodes_[to].points, initial, options_.icp);
   if (!r.aligned) return std::nullopt;
   if (loop_closure && r.rms_m > options_.loop_closure_max_rms_m) return std::nullopt;
+  if (!loop_closure && !AgreesWithOdometry(initial, r.relative)) return std::nullopt;
   PoseEdge edge;
   edge.from = from;
   edge.to = to;
@@ -116,28 +165,50 @@ SlamBackEndResult SlamBackEnd::Optimize() const {
   }
   result.alignment_edges = static_cast<int>(sequential_edges_.size());
   result.plate_readings = static_cast<int>(plates_.size());
-  result.summary = graph.Optimize(options_.graph);
-
-  // Loop closures: each node against the nearest earlier node far enough back in sequence.
-  if (options_.loop_closure_radius_m > 0) {
-    for (int j = options_.loop_closure_min_separation; j < n; ++j) {
-      int nearest = -1;
-      double nearest_d = options_.loop_closure_radius_m;
-      for (int i = 0; i + options_.loop_closure_min_separation <= j; ++i) {
-        const double d = Norm(graph.node(i).Position() - graph.node(j).Position());
-        if (d < nearest_d) nearest_d = d, nearest = i;
-      }
-      if (nearest < 0) continue;
-      // Aligned afresh at every solve, from this solve's relative pose: an alignment made in an earlier solve
-      // started from a rougher estimate and may have settled elsewhere.
-      const Pose2D initial = graph.node(nearest).Between(graph.node(j));
-      if (const std::optional<PoseEdge> edge = Align(nearest, j, initial, true)) {
-        graph.AddEdge(*edge);
-        ++result.loop_closures;
+  // Loop closures, aligned afresh at every solve (an alignment made in an earlier solve started from a rougher
+  // estimate and may have settled elsewhere). First where the front end's poses say the robot came back: the
+  // filter closes loops itself (its particles' maps), which a graph of odometry and sequential alignments
+  // alone has forgotten by its first solve (on real logs that solve drifts metres away, and a search around
+  // it finds no true revisit). Then where this solve says so, and the graph is solved again.
+  // Nodes whose front-end pose is trusted to propose loop closures: pinned, and so are their neighbours within
+  // front_end_pinned_neighbours in sequence (one matched scan amid degenerate ones sits in a map the filter
+  // built from odometry along the axis).
+  std::vector<bool> trusted(n, false);
+  for (int i = 0; i < n; ++i) {
+    bool all = true;
+    for (int k = std::max(0, i - options_.front_end_pinned_neighbours);
+         k <= std::min(n - 1, i + options_.front_end_pinned_neighbours) && all; ++k) {
+      all = nodes_[k].front_end_pinned;
+    }
+    trusted[i] = all;
+  }
+  std::set<std::pair<int, int>> closed;
+  const auto close_loops = [&](const auto& pose_of, bool only_pinned) {
+    int added = 0;
+    const std::vector<std::vector<int>> candidates = LoopClosureCandidates(n, pose_of);
+    for (int j = 0; j < n; ++j) {
+      int closed_here = 0;
+      for (int i : candidates[j]) {
+        if (closed_here >= options_.loop_closures_per_node) break;
+        if (only_pinned && !(trusted[i] && trusted[j])) continue;
+        if (!closed.insert({i, j}).second) continue;
+        if (const std::optional<PoseEdge> edge = Align(i, j, pose_of(i).Between(pose_of(j)), true)) {
+          graph.AddEdge(*edge);
+          ++added, ++closed_here;
+        }
       }
     }
-    if (result.loop_closures > 0) result.summary = graph.Optimize(options_.graph);
-  }
+    result.loop_closures += added;
+    return added;
+  };
+  close_loops([&](int i) -> const Pose2D& { return nodes_[i].front_end; }, true);
+  result.summary = graph.Optimize(options_.graph);
+  const std::vector<Pose2D> solved = [&] {
+    std::vector<Pose2D> poses;
+    for (int i = 0; i < n; ++i) poses.push_back(graph.node(i));
+    return poses;
+  }();
+  if (close_loops([&](int i) -> const Pose2D& { return solved[i]; }, false) > 0) result.summary = graph.Optimize(options_.graph);
 
   for (int i = 0; i < n; ++i) result.poses.push_back(graph.node(i));
   for (const auto& [plate_id, landmark] : landmark_of_plate) {

@@ -91,9 +91,11 @@ std::optional<double> PlateRangeAlongBearing(const RangeScan& scan, double beari
 
 bool TextSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index, bool force_update) {
   ValidatePose(odometry_pose, "TextSlam::AddScan");
+  const int degenerate_before = slam_.stats().degenerate_scans;
   const bool processed = slam_.AddScan(scan, odometry_pose, scan_index, force_update);
   if (processed && options_.back_end.enabled) {
-    back_end_.AddNode(slam_.MatchPoints(scan), odometry_pose, slam_.BestParticle().pose);
+    const bool pinned = slam_.stats().degenerate_scans == degenerate_before;
+    back_end_.AddNode(slam_.MatchPoints(scan), odometry_pose, slam_.BestParticle().pose, pinned);
     node_scans_.push_back(scan);
   }
   return processed;

@@ -1,6 +1,7 @@
 #include "doorplate_localization/slam/slam_back_end.h"
 
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -113,6 +114,60 @@ TEST(SlamBackEnd, TwoReadingsOfAPlatePullADriftedOdometryTogether) {
   EXPECT_NEAR(DriftedPairReading({0}).poses[1].x_m, 1.3, 0.01);
 }
 
+TEST(SlamBackEnd, AnAlignmentFarFromItsOdometryIsDroppedAsAFalseMatch) {
+  // The odometry says 0.3 m forward; the scans were taken 0.8 m apart. In the room the alignment finds the
+  // 0.8 m, 0.5 m from its odometry guess: far outside the gate (5σ ≈ 0.12 m over 0.3 m), so it is dropped.
+  const std::vector<Pose2D> truth = {{0, 0, 0}, {0.8, 0, 0}};
+  const std::vector<Pose2D> odometry = {{0, 0, 0}, {0.3, 0, 0}};
+  const auto run = [&](double gate_sigmas) {
+    SlamBackEndOptions options;
+    options.sequential_gate_sigmas = gate_sigmas;
+    SlamBackEnd back_end(options);
+    for (int i = 0; i < 2; ++i) back_end.AddNode(PointsAt(test::Room(), truth[i]), odometry[i], odometry[i]);
+    return back_end.Optimize();
+  };
+  const SlamBackEndResult gated = run(5.0);
+  EXPECT_EQ(gated.alignment_edges, 0);
+  EXPECT_NEAR(gated.poses[1].x_m, 0.3, 0.05);  // odometry alone
+  const SlamBackEndResult ungated = run(0.0);
+  EXPECT_EQ(ungated.alignment_edges, 1);
+  // The laser's 0.8 m then outweighs the odometry's 0.3 m (here the laser was right; on real logs such
+  // disagreements were mostly false matches: flipped or slid scans, docs/slam.md).
+  EXPECT_GT(ungated.poses[1].x_m, 0.55);
+}
+
+// 30 nodes that leave node 0's place and come back to it; only the first and the last have a scan (no
+// sequential alignment links them), the odometry ends 2 m off (beyond loop_closure_radius_m), the front
+// end's poses are right.
+// `pinned(i)`: whether node i's front-end pose was pinned by its scan match.
+SlamBackEndResult RunLoopWithLostOdometry(const std::function<bool(int)>& pinned) {
+  SlamBackEnd back_end{SlamBackEndOptions{}};
+  constexpr int kNodes = 30;
+  for (int i = 0; i < kNodes; ++i) {
+    const double t = 2 * M_PI * i / (kNodes - 1);
+    const Pose2D truth{std::sin(t), 1 - std::cos(t), 0};
+    const Pose2D odometry{truth.x_m + 2.0 * i / (kNodes - 1), truth.y_m, 0};
+    const bool ends = i == 0 || i == kNodes - 1;
+    back_end.AddNode(ends ? PointsAt(test::Room(), truth) : std::vector<Vec2>{}, odometry, truth, pinned(i));
+  }
+  return back_end.Optimize();
+}
+
+TEST(SlamBackEnd, TheFrontEndsPosesProposeTheLoopClosuresTheOdometryLost) {
+  const SlamBackEndResult pinned = RunLoopWithLostOdometry([](int) { return true; });
+  EXPECT_EQ(pinned.loop_closures, 1);
+  EXPECT_LT(std::hypot(pinned.poses.back().x_m, pinned.poses.back().y_m), 0.05);
+  // A front end whose matches were degenerate (its poses came from odometry) proposes none...
+  const SlamBackEndResult unpinned = RunLoopWithLostOdometry([](int) { return false; });
+  EXPECT_EQ(unpinned.loop_closures, 0);
+  EXPECT_GT(std::hypot(unpinned.poses.back().x_m, unpinned.poses.back().y_m), 1.5);
+  // ...nor does one pinned scan amid degenerate ones (front_end_pinned_neighbours: 1 on each side).
+  const SlamBackEndResult isolated = RunLoopWithLostOdometry([](int i) { return i == 0 || i == 29; });
+  EXPECT_EQ(isolated.loop_closures, 0);
+  const SlamBackEndResult stretches = RunLoopWithLostOdometry([](int i) { return i <= 3 || i >= 26; });
+  EXPECT_EQ(stretches.loop_closures, 1);
+}
+
 TEST(SlamBackEnd, APlateReadingAtANodeThatDoesNotExistThrows) {
   SlamBackEnd back_end{SlamBackEndOptions{}};
   EXPECT_THROW(back_end.AddPlateReading(0, 0, {1, 1}), std::invalid_argument);  // no node yet
@@ -149,6 +204,18 @@ TEST(SlamBackEnd, BadOptionsThrowNamingTheField) {
   o = {};
   o.loop_closure_min_separation = 0;
   ExpectThrowNaming(o, "SlamBackEndOptions.loop_closure_min_separation");
+  o = {};
+  o.loop_closure_max_tries = 0;
+  ExpectThrowNaming(o, "SlamBackEndOptions.loop_closure_max_tries");
+  o = {};
+  o.loop_closures_per_node = 0;
+  ExpectThrowNaming(o, "SlamBackEndOptions.loop_closures_per_node");
+  o = {};
+  o.sequential_gate_sigmas = -1;
+  ExpectThrowNaming(o, "SlamBackEndOptions.sequential_gate_sigmas");
+  o = {};
+  o.front_end_pinned_neighbours = -1;
+  ExpectThrowNaming(o, "SlamBackEndOptions.front_end_pinned_neighbours");
   o = {};
   o.icp.degenerate_min_fraction = 1.0;
   ExpectThrowNaming(o, "SlamBackEndOptions.icp.degenerate_min_fraction");

@@ -19,7 +19,9 @@
 // Frames: map frame = the first node's frame as the filter set it; node points are in base_link.
 #pragma once
 
+#include <functional>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "doorplate_localization/common/geometry2d.h"
@@ -35,6 +37,17 @@ struct SlamBackEndOptions {
   double loop_closure_radius_m = 1.5;
   int loop_closure_min_separation = 20;      // nodes apart in sequence to count as a loop closure
   double loop_closure_max_rms_m = 0.05;      // alignments worse than this are not used
+  // Per node, loop closures are tried with the nearest node of up to this many earlier visits (a laser of
+  // less than 360° sees nothing in common with a visit in the opposite direction), and at most
+  // loop_closures_per_node of them are kept.
+  int loop_closure_max_tries = 4;
+  int loop_closures_per_node = 2;
+  // The front end's poses propose loop closures only between nodes that were pinned (AddNode) together with
+  // this many neighbours on each side in sequence.
+  int front_end_pinned_neighbours = 1;
+  // A sequential alignment further from its odometry guess than this many odometry sigmas (the noise
+  // below plus the scale prior's, in translation or in heading) is dropped as a false match. 0: off.
+  double sequential_gate_sigmas = 5.0;
   // Odometry noise (1σ) of one step: translation σ² = trans_m2_per_m · d + trans_m2_per_rad · |Δθ|,
   // heading σ² = rot_rad2_per_m · d + rot_rad2_per_rad · |Δθ|, plus the floor below.
   double odometry_trans_m2_per_m = 0.001;
@@ -64,8 +77,11 @@ class SlamBackEnd {
   explicit SlamBackEnd(const SlamBackEndOptions& options);
 
   // One processed scan: its echoes in base_link (beam order), the odometry pose (base_link in odom) and
-  // the front end's estimate (base_link in map), used as the starting point.
-  void AddNode(std::vector<Vec2> points, const Pose2D& odometry_pose, const Pose2D& front_end_pose);
+  // the front end's estimate (base_link in map), used as the starting point. `front_end_pinned`: the front
+  // end's scan match fixed the position in every direction (false: along one axis it came from odometry,
+  // e.g. in a featureless corridor); only pinned nodes take loop closures the front end's poses propose.
+  void AddNode(std::vector<Vec2> points, const Pose2D& odometry_pose, const Pose2D& front_end_pose,
+               bool front_end_pinned = true);
   // A plate reading: the plate's position in the frame of node `node` (0-based, < num_nodes()).
   void AddPlateReading(int plate_id, int node, const Vec2& in_node_frame);
 
@@ -81,6 +97,7 @@ class SlamBackEnd {
     std::vector<Vec2> points;
     Pose2D odometry;
     Pose2D front_end;
+    bool front_end_pinned = true;
     std::optional<IcpReference> reference;  // built on first use
   };
   struct PlateReading {
@@ -89,7 +106,13 @@ class SlamBackEnd {
     Vec2 in_node_frame;
   };
   const IcpReference& Reference(int node) const;
+  // For each node j < n, the nodes a loop closure with j is tried with, nearest first (by `pose_of`): within
+  // loop_closure_radius_m, at least loop_closure_min_separation earlier, the nearest of each earlier visit,
+  // at most loop_closure_max_tries.
+  std::vector<std::vector<int>> LoopClosureCandidates(int n, const std::function<const Pose2D&(int)>& pose_of) const;
   PoseEdge OdometryEdge(int from, int to) const;
+  // Whether an alignment's result lies within sequential_gate_sigmas of the odometry's relative pose.
+  bool AgreesWithOdometry(const Pose2D& odometry, const Pose2D& aligned) const;
   std::optional<PoseEdge> Align(int from, int to, const Pose2D& initial, bool loop_closure) const;
 
   const SlamBackEndOptions options_;
