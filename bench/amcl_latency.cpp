@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <map>
 #include <string>
 #include <vector>
@@ -15,6 +14,8 @@
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <tf2_msgs/TFMessage.h>
+
+#include "cli_app.h"
 
 namespace {
 
@@ -24,29 +25,22 @@ double Percentile(std::vector<double> v, double q) {
   return v[std::min(v.size() - 1, static_cast<size_t>(q * (v.size() - 1) + 0.5))];
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  const char* usage = "usage: doorplate_amcl_latency --duration-s S --label TEXT [--transform-tolerance-s T]\n";
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
-      std::fputs(usage, stdout);
-      return 0;
-    }
-  }
-  ros::init(argc, argv, "amcl_latency", ros::init_options::AnonymousName);
+struct Args {
   double duration_s = 60.0, tolerance_s = 0.1;
   std::string label = "run";
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string key = argv[i];
-    if (key == "--duration-s") duration_s = std::stod(argv[i + 1]);
-    else if (key == "--transform-tolerance-s") tolerance_s = std::stod(argv[i + 1]);
-    else if (key == "--label") label = argv[i + 1];
-    else {
-      std::fputs(usage, stderr);
-      return 2;
-    }
-  }
+};
+
+void AddOptions(CLI::App* app, Args* args) {
+  app->add_option("--duration-s", args->duration_s, "wall-clock seconds to measure")->capture_default_str()
+      ->check(doorplate_localization::tools::PositiveNumber());
+  app->add_option("--label", args->label, "first column of the row")->capture_default_str();
+  app->add_option("--transform-tolerance-s", args->tolerance_s, "the localizer's transform_tolerance")
+      ->capture_default_str()->check(doorplate_localization::tools::Number(0.0));
+}
+
+int Run(const Args& args) {
+  const double duration_s = args.duration_s, tolerance_s = args.tolerance_s;
+  const std::string& label = args.label;
   ros::NodeHandle nh;
   std::map<long, ros::WallTime> scan_arrivals;  // scan stamp (ns) -> wall time of arrival
   std::vector<double> latencies_ms;
@@ -71,4 +65,12 @@ int main(int argc, char** argv) {
   std::printf("| %s | %d | %zu | %.2f | %.2f | %.2f |\n", label.c_str(), scans, latencies_ms.size(),
               Percentile(latencies_ms, 0.5), Percentile(latencies_ms, 0.95), Percentile(latencies_ms, 1.0));
   return latencies_ms.empty() ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "amcl_latency", ros::init_options::AnonymousName);  // takes the ROS remappings out of argv
+  return doorplate_localization::tools::RunTool("doorplate_amcl_latency", "map -> odom publish latency of the Text "
+                                                "AMCL nodelet (one markdown row).", AddOptions, Run, argc, argv);
 }

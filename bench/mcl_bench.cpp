@@ -3,7 +3,7 @@
 // split into the sensor model alone and the whole update (which resamples every resample_interval = 2
 // updates, with KLD pinned to the particle count); plus the clustering behind Estimate() and the
 // likelihood-field build time for a 50 m and a 200 m square map. Goal: 2000 particles, 60 beams <= 2 ms.
-// Usage: doorplate_mcl_bench [--iterations N] [--markdown OUT.md]
+// Usage: doorplate_mcl_bench [--iterations N] [--markdown OUT.md] (--help: the options)
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_app.h"
 #include "doorplate_localization/mcl/diff_drive_motion_model.h"
 #include "doorplate_localization/mcl/grid_ray_caster.h"
 #include "doorplate_localization/mcl/likelihood_field_model.h"
@@ -105,28 +106,20 @@ Row Measure(const std::shared_ptr<const LocalizationGrid>& grid, int particles, 
   return {particles, beams, model_ms, update_ms, estimate_ms};
 }
 
-}  // namespace
-
-constexpr char kUsage[] = "usage: doorplate_mcl_bench [--iterations N] [--markdown OUT.md]\n";
-
-int main(int argc, char** argv) {
+struct Args {
   int iterations = 200;
   std::string markdown;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      std::cout << kUsage;
-      return 0;
-    }
-    if (arg == "--iterations" && i + 1 < argc) {
-      iterations = std::stoi(argv[++i]);
-    } else if (arg == "--markdown" && i + 1 < argc) {
-      markdown = argv[++i];
-    } else {
-      std::cerr << kUsage;
-      return 2;
-    }
-  }
+};
+
+void AddOptions(CLI::App* app, Args* args) {
+  app->add_option("--iterations", args->iterations, "calls per timed block (each figure: the best of three blocks)")
+      ->capture_default_str()->transform(tools::WholeNumber(1));
+  app->add_option("--markdown", args->markdown, "also write the tables to this file");
+}
+
+int Run(const Args& args) {
+  const int iterations = args.iterations;
+  const std::string& markdown = args.markdown;
   // Prints markdown as it goes; `out` collects the same text for --markdown.
   std::string out;
   const auto emit = [&](const std::string& text) {
@@ -168,4 +161,11 @@ int main(int argc, char** argv) {
          << "pose (σ 0.3 m, 0.1 rad), KLD pinned to the particle count.\n\n" << out;
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return tools::RunTool("doorplate_mcl_bench", "Localizer speed: likelihood-field build, UpdateLaser and clustering.",
+                        AddOptions, Run, argc, argv);
 }

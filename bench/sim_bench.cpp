@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_app.h"
 #include "doorplate_localization/sim/simulator.h"
 #include "doorplate_localization/sim/world_loader.h"
 
@@ -58,37 +59,26 @@ Result RunCase(const World& world_file, const Case& c, double seconds, std::uint
   return {c, steps * options.physics_step_s, wall, scans, images};
 }
 
-}  // namespace
-
-constexpr char kUsage[] = "usage: doorplate_sim_bench [--world FILE] [--seconds S] [--seed N] [--markdown OUT.md]\n";
-
-int main(int argc, char** argv) {
+struct Args {
   std::string world_file = std::string(DOORPLATE_SOURCE_DIR) + "/worlds/paper_real_corridor.yaml";
   std::string markdown;
   double seconds = 60.0;
   std::uint64_t seed = 1;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        std::cerr << "missing value after " << arg << "\n";
-        std::exit(2);
-      }
-      return argv[++i];
-    };
-    if (arg == "--help" || arg == "-h") {
-      std::cout << kUsage;
-      return 0;
-    }
-    if (arg == "--world") world_file = value();
-    else if (arg == "--seconds") seconds = std::stod(value());
-    else if (arg == "--seed") seed = std::stoull(value());
-    else if (arg == "--markdown") markdown = value();
-    else {
-      std::cerr << kUsage;
-      return 2;
-    }
-  }
+};
+
+void AddOptions(CLI::App* app, Args* args) {
+  app->add_option("--world", args->world_file, "world file")->capture_default_str();
+  app->add_option("--seconds", args->seconds, "simulated seconds per configuration")->capture_default_str()
+      ->check(tools::PositiveNumber());
+  app->add_option("--seed", args->seed, "simulator seed")->capture_default_str()->transform(tools::Seed());
+  app->add_option("--markdown", args->markdown, "also write the table to this file");
+}
+
+int Run(const Args& args) {
+  const std::string& world_file = args.world_file;
+  const std::string& markdown = args.markdown;
+  const double seconds = args.seconds;
+  const std::uint64_t seed = args.seed;
   World world;
   try {
     world = LoadWorldFile(world_file);
@@ -129,4 +119,11 @@ int main(int argc, char** argv) {
         << "(the baseline, 1×, is real time).\n\n" << table;
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return tools::RunTool("doorplate_sim_bench", "Simulator speed: real-time factor per sensor configuration.", AddOptions,
+                        Run, argc, argv);
 }

@@ -9,7 +9,6 @@
 #include <ctime>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -19,6 +18,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "cli_app.h"
 #include "doorplate_localization/text/text_extractor.h"
 
 namespace dl = doorplate_localization;
@@ -119,41 +119,40 @@ Result RunDetector(const std::vector<cv::Mat>& frames, bool band, bool nms) {
   return result;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+struct Args {
   int num_frames = 300;
-  cv::Size size(640, 480);
+  std::string size_text = "640x480", recognizer_name = "tesseract";
+  cv::Size size{640, 480};
   dl::TextRecognizerType recognizer = dl::TextRecognizerType::kTesseract;
   std::vector<std::string> paths;
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
-      std::printf("usage: doorplate_text_bench [--frames N] [--size WIDTHxHEIGHT] [--recognizer tesseract|ppocr] "
-                  "[IMAGE...]\n  times the text extractor on IMAGEs (default: N synthetic frames)\n");
-      return 0;
+};
+
+void AddOptions(CLI::App* app, Args* args) {
+  app->add_option("--frames", args->num_frames, "frames to process")->capture_default_str()
+      ->transform(dl::tools::WholeNumber(1));
+  app->add_option("--size", args->size_text, "WIDTHxHEIGHT of the synthetic frames (at least 64x48)")
+      ->capture_default_str();
+  app->add_option("--recognizer", args->recognizer_name, "tesseract or ppocr")->capture_default_str();
+  app->add_option("IMAGE", args->paths, "images to process in turn (default: synthetic frames)");
+  app->callback([args] {
+    char x = 0, extra = 0;
+    if (std::sscanf(args->size_text.c_str(), "%d%c%d%c", &args->size.width, &x, &args->size.height, &extra) != 3 ||
+        x != 'x' || args->size.width < 64 || args->size.height < 48) {
+      throw dl::tools::UsageError("--size: '" + args->size_text + "' must be WIDTHxHEIGHT, at least 64x48");
     }
-    if (std::strcmp(argv[i], "--frames") == 0 && i + 1 < argc) {
-      num_frames = std::atoi(argv[++i]);
-    } else if (std::strcmp(argv[i], "--size") == 0 && i + 1 < argc) {
-      if (std::sscanf(argv[++i], "%dx%d", &size.width, &size.height) != 2 || size.width < 64 || size.height < 48) {
-        std::fprintf(stderr, "--size must be WIDTHxHEIGHT\n");
-        return 2;
-      }
-    } else if (std::strcmp(argv[i], "--recognizer") == 0 && i + 1 < argc) {
-      try {
-        recognizer = dl::ParseTextRecognizerType(argv[++i], "--recognizer");
-      } catch (const std::invalid_argument& e) {
-        std::fprintf(stderr, "%s\n", e.what());
-        return 2;
-      }
-    } else {
-      paths.push_back(argv[i]);
+    try {
+      args->recognizer = dl::ParseTextRecognizerType(args->recognizer_name, "--recognizer");
+    } catch (const std::invalid_argument& e) {
+      throw dl::tools::UsageError(e.what());
     }
-  }
-  if (num_frames <= 0) {
-    std::fprintf(stderr, "--frames must be > 0\n");
-    return 2;
-  }
+  });
+}
+
+int Run(const Args& args) {
+  const int num_frames = args.num_frames;
+  const cv::Size size = args.size;
+  const dl::TextRecognizerType recognizer = args.recognizer;
+  const std::vector<std::string>& paths = args.paths;
   cv::setNumThreads(1);
   const char* omp = std::getenv("OMP_THREAD_LIMIT");
   std::printf("OMP_THREAD_LIMIT=%s, cv::getNumThreads()=%d\n", omp ? omp : "(unset)", cv::getNumThreads());
@@ -194,4 +193,11 @@ int main(int argc, char** argv) {
               full.fps, full.cpu_fps, full.boxes_per_frame, banded.fps, banded.cpu_fps, banded.boxes_per_frame);
   std::printf("reports: full image [ %s] | band [ %s]\n", full.reports.c_str(), banded.reports.c_str());
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return dl::tools::RunTool("doorplate_text_bench", "Text extractor throughput on 640x480 (or --size) frames, band and full "
+                            "image, one core.", AddOptions, Run, argc, argv);
 }

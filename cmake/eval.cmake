@@ -3,21 +3,21 @@
 # everything but the command-line front end, so the tests can run the experiments on tiny worlds.
 add_library(doorplate_eval_lib STATIC
   src/eval/eval_args.cpp
-  src/eval/json_writer.cpp
+  src/eval/result_json.cpp
   src/eval/map_overlay.cpp
   src/eval/plate_scorer.cpp
   src/eval/ocr_eval.cpp
   src/eval/ocr_eval_json.cpp)
-target_include_directories(doorplate_eval_lib PUBLIC src/eval)
+target_include_directories(doorplate_eval_lib PUBLIC src/eval src/tools)
 target_link_libraries(doorplate_eval_lib PUBLIC doorplate_sim doorplate_text doorplate_behaviour opencv_core
-  PRIVATE opencv_imgproc opencv_imgcodecs)
+  nlohmann_json::nlohmann_json CLI11::CLI11 PRIVATE opencv_imgproc opencv_imgcodecs)
 
 add_executable(doorplate_eval src/eval/main.cpp src/eval/ocr_command.cpp)
 target_link_libraries(doorplate_eval doorplate_eval_lib)
 install(TARGETS doorplate_eval RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(name eval_args json_writer map_overlay plate_scorer ocr_eval_json ocr_eval)
+  foreach(name eval_args result_json map_overlay plate_scorer ocr_eval_json ocr_eval)
     doorplate_add_core_test(${name}_test test/eval/${name}_test.cpp doorplate_eval_lib)
   endforeach()
 endif()

@@ -21,9 +21,27 @@ if(DOORPLATE_FUZZ)
   set(map_yaml_fuzz_libs doorplate_maps)
   set(map_image_fuzz_libs doorplate_maps)
   set(carmen_reader_fuzz_libs doorplate_slam)
+  # The message conversions of the nodelets (issue 18): their sources compiled in (instrumented), with
+  # roscpp's serialization and time libraries only, not roscpp.
+  find_library(ROSCPP_SERIALIZATION_LIBRARY roscpp_serialization REQUIRED)
+  find_library(ROSTIME_LIBRARY rostime REQUIRED)
+  find_library(CPP_COMMON_LIBRARY cpp_common REQUIRED)
+  list(APPEND doorplate_fuzz_targets message_conversions)
+  set(message_conversions_fuzz_sources src/ros/scan_conversions.cpp src/ros/map_conversions.cpp
+      src/ros/pose_conversions.cpp src/ros/text_detection_conversions.cpp src/ros/amcl_conversions.cpp
+      src/ros/slam_conversions.cpp)
+  set(message_conversions_fuzz_libs doorplate_mcl doorplate_slam doorplate_maps Eigen3::Eigen
+      ${ROSCPP_SERIALIZATION_LIBRARY} ${ROSTIME_LIBRARY} ${CPP_COMMON_LIBRARY})
+  # The MRPT rawlog reader of doorplate_map_rawlog (cmake/slam.cmake builds it where MRPT is found).
+  if(TARGET doorplate_rawlog_reader)
+    list(APPEND doorplate_fuzz_targets rawlog_reader)
+    set(rawlog_reader_fuzz_libs doorplate_rawlog_reader)
+  endif()
   add_custom_target(fuzz_targets)
   foreach(name ${doorplate_fuzz_targets})
-    add_executable(${name}_fuzz fuzz/${name}_fuzz.cpp)
+    add_executable(${name}_fuzz fuzz/${name}_fuzz.cpp ${${name}_fuzz_sources})
+    target_include_directories(${name}_fuzz PRIVATE fuzz ${catkin_INCLUDE_DIRS})
+    add_dependencies(${name}_fuzz ${PROJECT_NAME}_generate_messages_cpp)
     target_link_libraries(${name}_fuzz ${${name}_fuzz_libs})
     target_link_options(${name}_fuzz PRIVATE -fsanitize=fuzzer)
     set_target_properties(${name}_fuzz PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/fuzz)

@@ -14,7 +14,7 @@ install(TARGETS doorplate_laser_fit_lib LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB
 add_executable(doorplate_laser_fit src/tools/laser_fit.cpp src/tools/laser_fit_report.cpp
   src/tools/laser_fit_plot.cpp)
 target_link_libraries(doorplate_laser_fit doorplate_laser_fit_lib ZLIB::ZLIB opencv_core opencv_imgproc
-  opencv_imgcodecs)
+  opencv_imgcodecs CLI11::CLI11)
 install(TARGETS doorplate_laser_fit RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)

@@ -32,7 +32,8 @@ install(TARGETS doorplate_mcl LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATI
 
 # Time per UpdateLaser (likelihood field) for 500/2000/5000 particles and 60/360 beams, one core.
 add_executable(doorplate_mcl_bench bench/mcl_bench.cpp)
-target_link_libraries(doorplate_mcl_bench doorplate_mcl)
+target_include_directories(doorplate_mcl_bench PRIVATE src/tools)
+target_link_libraries(doorplate_mcl_bench doorplate_mcl CLI11::CLI11)
 install(TARGETS doorplate_mcl_bench RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)

@@ -11,7 +11,7 @@ install(TARGETS doorplate_odometry_fit_lib LIBRARY DESTINATION ${CATKIN_PACKAGE_
 find_package(mrpt-obs QUIET)
 if(mrpt-obs_FOUND)
   add_executable(doorplate_odometry_fit src/tools/odometry_fit.cpp)
-  target_link_libraries(doorplate_odometry_fit doorplate_odometry_fit_lib doorplate_slam mrpt::obs)
+  target_link_libraries(doorplate_odometry_fit doorplate_odometry_fit_lib doorplate_slam doorplate_rawlog_reader CLI11::CLI11)
   install(TARGETS doorplate_odometry_fit RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 endif()
 

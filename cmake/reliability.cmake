@@ -4,6 +4,9 @@ if(CATKIN_ENABLE_TESTING)
   # The offline tools' output guard (issue 18: never overwrite an input, write nothing for an unusable run).
   doorplate_add_core_test(output_guard_test test/tools/output_guard_test.cpp doorplate_maps)
   target_include_directories(output_guard_test PRIVATE src/tools)
+  # The tools' command-line validators and exit statuses (src/tools/cli_app.h, CLI11).
+  doorplate_add_core_test(cli_app_test test/tools/cli_app_test.cpp CLI11::CLI11)
+  target_include_directories(cli_app_test PRIVATE src/tools)
 endif()
 
 # doorplate_soak (src/tools/soak.cpp): the one-hour soak of docs/results/soak.md and, with --faults, the
@@ -15,7 +18,7 @@ if(TARGET doorplate_eval_localize)
   target_link_libraries(doorplate_soak_lib PUBLIC doorplate_eval_localize doorplate_mcl doorplate_sim doorplate_text
                         doorplate_behaviour)
   add_executable(doorplate_soak src/tools/soak.cpp)
-  target_link_libraries(doorplate_soak doorplate_soak_lib doorplate_maps)
+  target_link_libraries(doorplate_soak doorplate_soak_lib doorplate_maps CLI11::CLI11)
   install(TARGETS doorplate_soak RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
   if(CATKIN_ENABLE_TESTING)
     doorplate_add_core_test(soak_run_test test/tools/soak_run_test.cpp doorplate_soak_lib)

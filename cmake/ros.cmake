@@ -80,8 +80,9 @@ add_library(doorplate_report_figures STATIC src/ros/tools/report_layout.cpp src/
 target_include_directories(doorplate_report_figures PUBLIC include src/ros/tools PRIVATE ${OpenCV_INCLUDE_DIRS})
 target_link_libraries(doorplate_report_figures PUBLIC doorplate_maps doorplate_common opencv_core PRIVATE opencv_imgproc)
 add_executable(doorplate_mission_report src/ros/tools/mission_report.cpp)
+target_include_directories(doorplate_mission_report PRIVATE src/tools)
 target_link_libraries(doorplate_mission_report doorplate_mission_bags doorplate_report_figures doorplate_map_measure
-                      doorplate_sim doorplate_maps opencv_imgcodecs)
+                      doorplate_sim doorplate_maps opencv_imgcodecs CLI11::CLI11)
 install(TARGETS doorplate_mission_report RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 if(CATKIN_ENABLE_TESTING)
   doorplate_add_core_test(report_layout_test test/ros/report_layout_test.cpp doorplate_report_figures)

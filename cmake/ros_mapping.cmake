@@ -21,7 +21,7 @@ install(TARGETS doorplate_mapping_nodelet LIBRARY DESTINATION ${CATKIN_PACKAGE_L
 # Offline mapping of a rosbag (scan + tf + text_detections) with the same TextSlam and option table.
 add_executable(doorplate_map_bag src/ros/tools/map_bag.cpp)
 target_include_directories(doorplate_map_bag PRIVATE src/tools ${catkin_INCLUDE_DIRS})
-target_link_libraries(doorplate_map_bag doorplate_mapping_conversions ${catkin_LIBRARIES})
+target_link_libraries(doorplate_map_bag doorplate_mapping_conversions ${catkin_LIBRARIES} CLI11::CLI11)
 install(TARGETS doorplate_map_bag RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
@@ -55,7 +55,7 @@ find_package(mrpt-obs QUIET)
 if(mrpt-obs_FOUND)
   add_executable(doorplate_map_rawlog src/tools/map_rawlog.cpp)
   target_include_directories(doorplate_map_rawlog PRIVATE src/tools)
-  target_link_libraries(doorplate_map_rawlog doorplate_slam doorplate_maps mrpt::obs)
+  target_link_libraries(doorplate_map_rawlog doorplate_slam doorplate_maps doorplate_rawlog_reader CLI11::CLI11)
   install(TARGETS doorplate_map_rawlog RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
   if(CATKIN_ENABLE_TESTING)
     # Real data: the Málaga loop of mrpt-common against MRPT's regression value (skipped without the file).

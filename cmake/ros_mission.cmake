@@ -17,6 +17,6 @@ endif()
 
 # Benchmark: map -> odom publish latency of the Text AMCL nodelet (bench/amcl_latency.sh runs it).
 add_executable(doorplate_amcl_latency bench/amcl_latency.cpp)
-target_include_directories(doorplate_amcl_latency PRIVATE ${catkin_INCLUDE_DIRS})
-target_link_libraries(doorplate_amcl_latency ${catkin_LIBRARIES})
+target_include_directories(doorplate_amcl_latency PRIVATE src/tools ${catkin_INCLUDE_DIRS})
+target_link_libraries(doorplate_amcl_latency ${catkin_LIBRARIES} CLI11::CLI11)
 install(TARGETS doorplate_amcl_latency RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})

@@ -21,16 +21,17 @@ target_include_directories(doorplate_sim PUBLIC include)
 target_link_libraries(doorplate_sim PUBLIC doorplate_common doorplate_maps ${OpenCV_LIBS} PRIVATE yaml-cpp)
 
 add_executable(doorplate_sim_bench bench/sim_bench.cpp)
-target_link_libraries(doorplate_sim_bench doorplate_sim)
+target_include_directories(doorplate_sim_bench PRIVATE src/tools)
+target_link_libraries(doorplate_sim_bench doorplate_sim CLI11::CLI11)
 target_compile_definitions(doorplate_sim_bench PRIVATE DOORPLATE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 add_executable(doorplate_sim_snapshot src/tools/sim_snapshot.cpp)
-target_link_libraries(doorplate_sim_snapshot doorplate_sim)
+target_link_libraries(doorplate_sim_snapshot doorplate_sim CLI11::CLI11)
 # Ground-truth occupancy and text maps of a world file (maps/ holds those of worlds/).
 add_executable(doorplate_world_maps src/tools/world_maps.cpp)
-target_link_libraries(doorplate_world_maps doorplate_sim)
+target_link_libraries(doorplate_world_maps doorplate_sim CLI11::CLI11)
 # A bench world whose plates are real plate photographs (crops listed in a TSV).
 add_executable(doorplate_photo_world src/tools/photo_world.cpp)
-target_link_libraries(doorplate_photo_world doorplate_sim)
+target_link_libraries(doorplate_photo_world doorplate_sim CLI11::CLI11)
 
 install(TARGETS doorplate_sim doorplate_sim_bench doorplate_sim_snapshot doorplate_world_maps doorplate_photo_world
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}

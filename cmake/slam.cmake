@@ -23,8 +23,21 @@ target_link_libraries(doorplate_slam PUBLIC doorplate_common doorplate_maps Eige
 install(TARGETS doorplate_slam LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 
 add_executable(doorplate_map_log src/tools/map_carmen.cpp)
-target_link_libraries(doorplate_map_log doorplate_slam doorplate_maps opencv_core opencv_imgproc opencv_imgcodecs)
+target_link_libraries(doorplate_map_log doorplate_slam doorplate_maps opencv_core opencv_imgproc opencv_imgcodecs
+  CLI11::CLI11)
 install(TARGETS doorplate_map_log RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+
+# The MRPT rawlog reader of doorplate_map_rawlog and doorplate_odometry_fit (src/tools/rawlog_reader.h: MRPT's
+# CRawlog, its errors named by file, without MRPT's call stack); built only where MRPT's obs library is found.
+find_package(mrpt-obs QUIET)
+if(mrpt-obs_FOUND)
+  add_library(doorplate_rawlog_reader STATIC src/tools/rawlog_reader.cpp)
+  target_include_directories(doorplate_rawlog_reader PUBLIC src/tools)
+  target_link_libraries(doorplate_rawlog_reader PUBLIC mrpt::obs)
+  if(CATKIN_ENABLE_TESTING)
+    doorplate_add_core_test(rawlog_reader_test test/tools/rawlog_reader_test.cpp doorplate_rawlog_reader)
+  endif()
+endif()
 
 if(CATKIN_ENABLE_TESTING)
   foreach(name carmen_reader correlative_search tiled_grid scan_matcher motion_model trajectory_tree rbpf_slam rbpf_slam_options text_slam mapping_session pose_graph scan_icp slam_back_end)

@@ -28,7 +28,8 @@ endif()
 
 # Frames per second of the extractor with and without the band (one core: OMP_THREAD_LIMIT=1).
 add_executable(doorplate_text_bench bench/text_bench.cpp)
-target_link_libraries(doorplate_text_bench doorplate_text opencv_imgcodecs)
+target_include_directories(doorplate_text_bench PRIVATE src/tools)
+target_link_libraries(doorplate_text_bench doorplate_text opencv_imgcodecs CLI11::CLI11)
 
 install(TARGETS doorplate_text doorplate_text_bench
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
@@ -49,7 +50,7 @@ endif()
 # The reader on still images (doorplate_read_image IMAGE... [--json F] [--width PX]); bench/real_photos.sh.
 add_executable(doorplate_read_image src/tools/read_image.cpp)
 target_include_directories(doorplate_read_image PRIVATE src/tools src/eval)
-target_link_libraries(doorplate_read_image doorplate_text doorplate_eval_lib opencv_imgcodecs)
+target_link_libraries(doorplate_read_image doorplate_text doorplate_eval_lib opencv_imgcodecs CLI11::CLI11)
 install(TARGETS doorplate_read_image RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 if(CATKIN_ENABLE_TESTING)
   doorplate_add_core_test(read_image_test test/tools/read_image_test.cpp doorplate_text opencv_imgcodecs)

@@ -16,8 +16,10 @@ DEMO_PKGS=(
   libsensor-msgs-dev libnav-msgs-dev libgeometry-msgs-dev libvisualization-msgs-dev libstd-srvs-dev libdiagnostic-msgs-dev
   librosbag-dev libcv-bridge-dev libimage-transport-dev
   python3-sensor-msgs python3-nav-msgs python3-geometry-msgs python3-tf2-msgs python3-std-msgs python3-std-srvs python3-rosservice
-  # core libraries (gtest: the build is configured with its tests, as scripts/test.sh's)
+  # core libraries (gtest: the build is configured with its tests, as scripts/test.sh's; CLI11 and nlohmann-json:
+  # header-only, the tools' command lines and results files, found by the top CMakeLists.txt, so every build needs them)
   libopencv-dev libtesseract-dev tesseract-ocr-eng libsuitesparse-dev libyaml-cpp-dev libeigen3-dev libgtest-dev
+  libcli11-dev nlohmann-json3-dev
 )
 PKGS=(
   "${DEMO_PKGS[@]}" catkin-lint libmrpt-dev

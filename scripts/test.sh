@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the package and runs every test: the ROS-free core gtests, the message-conversion gtests and the
 # rostests (each starts its own ROS master), the rviz screenshot test (test/viz; needs install_deps.sh
-# --with-viz) and the install space (scripts/check_install.sh). With --sanitize, also builds the core under ASan+UBSan in
+# --with-viz), the offline tools' bad-input corpus (test/bad_input) and the install space
+# (scripts/check_install.sh). With --sanitize, also builds the core under ASan+UBSan in
 # <repo>/build-asan and runs the core tests there, then fuzzes every file parser for a bounded time
 # (scripts/fuzz.sh: clang-14, <repo>/build-fuzz; DOORPLATE_FUZZ_SECONDS per target, default 30).
 # Prints "N passed, N failed" and exits non-zero on any failure.
@@ -32,6 +33,15 @@ if [[ "$viz_summary" =~ ^viz:\ ([0-9]+)\ passed,\ ([0-9]+)\ failed$ ]]; then
   passed=$((passed + BASH_REMATCH[1])); failed=$((failed + BASH_REMATCH[2]))
 else
   failed=$((failed + 1)); echo "[viz] did not run: $viz_summary"
+fi
+
+echo "== bad-input corpus: every offline tool on broken and absurd files (test/bad_input/run_bad_input.sh)"
+bad_output=$(bash "$repo/test/bad_input/run_bad_input.sh" "$build" 2>&1); echo "$bad_output"
+bad_summary=$(tail -n1 <<< "$bad_output")
+if [[ "$bad_summary" =~ ^bad_input:\ ([0-9]+)\ passed,\ ([0-9]+)\ failed$ ]]; then
+  passed=$((passed + BASH_REMATCH[1])); failed=$((failed + BASH_REMATCH[2]))
+else
+  failed=$((failed + 1)); echo "[bad_input] did not run: $bad_summary"
 fi
 
 echo "== install space: every tool and demo.launch from an install of this build (scripts/check_install.sh)"

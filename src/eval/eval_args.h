@@ -1,59 +1,19 @@
-// Command-line options of doorplate_eval subcommands: `--name value` pairs, declared per subcommand with
-// a default and a help line, checked strictly (unknown option, missing or malformed value: UsageError
-// naming the option). The options shared by every experiment are declared by CommonOptions().
+// Command-line pieces of doorplate_eval's subcommands (on CLI11, tools/cli_app.h): the options every
+// experiment shares, the seed of each pass, and where a world's text map lies.
 #pragma once
 
 #include <cstdint>
-#include <map>
-#include <stdexcept>
 #include <string>
-#include <vector>
+
+#include "usage_error.h"
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace doorplate_localization {
 
-class UsageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-struct OptionSpec {
-  std::string name;           // without the leading "--"
-  std::string default_value;  // "" with required = true: must be given
-  std::string help;
-  bool required = false;
-};
-
-class EvalArgs {
- public:
-  // `command` names the subcommand in messages and the usage text.
-  EvalArgs(std::string command, std::vector<OptionSpec> specs);
-
-  // Parses `args` (the words after the subcommand). "--help" sets help_requested() and stops.
-  // Throws UsageError for an unknown option, a missing value or a missing required option.
-  void Parse(const std::vector<std::string>& args);
-
-  bool help_requested() const { return help_requested_; }
-  // The value given, or the default.
-  const std::string& String(const std::string& name) const;
-  // Typed views; throw UsageError naming the option when the text is not of that type or out of range.
-  double Number(const std::string& name) const;
-  int Integer(const std::string& name, int min_value) const;
-  std::uint64_t Unsigned(const std::string& name) const;
-  bool OnOff(const std::string& name) const;  // "on"/"off" (also "true"/"false", "1"/"0")
-
-  std::string Usage() const;
-
- private:
-  const OptionSpec& Spec(const std::string& name) const;
-
-  std::string command_;
-  std::vector<OptionSpec> specs_;
-  std::map<std::string, std::string> values_;
-  bool help_requested_ = false;
-};
-
-// --world, --seed, --passes, --speed-mps, --json, --dump-dir.
-std::vector<OptionSpec> CommonOptions();
+using tools::UsageError;  // a bad command line: doorplate_eval exits with status 2
 
 struct CommonArgs {
   std::string world_path;
@@ -64,7 +24,9 @@ struct CommonArgs {
   std::string dump_dir;    // "" : no failure images
 };
 
-CommonArgs ReadCommonArgs(const EvalArgs& args);
+// --world (required), --seed, --passes, --speed-mps, --json (its folder must exist), --dump-dir on
+// `command`, bound to *common (whose values are the defaults).
+void AddCommonOptions(CLI::App* command, CommonArgs* common);
 
 // The simulator seed of pass `pass` (0-based) of an experiment run with `seed`: distinct, well mixed
 // (SplitMix64), the same on every machine.

@@ -2,39 +2,52 @@
 // the Text AMCL estimate, or to a room on another floor of a building by lift (--building); a table of the
 // trials and, with --json, the results as JSON.
 #include <cstdio>
-#include <filesystem>
-#include <iostream>
-#include <sstream>
+#include <memory>
 
 #include "doorplate_localization/maps/map_io.h"
 #include "building_input.h"
+#include "cli_app.h"
 #include "eval_args.h"
 #include "eval_commands.h"
 #include "goto_eval.h"
-#include "json_writer.h"
+#include "output_guard.h"
+#include "result_json.h"
 
 namespace doorplate_localization {
 namespace {
 
 constexpr double kDeg = 180.0 / M_PI;
 
-std::vector<OptionSpec> GotoOptions() {
-  return {
-      {"world", "", "world file with `corridors` (worlds/*.yaml, docs/world-format.md); or --building"},
-      {"building", "", "building file of worlds (worlds/*.building.yaml): start on a random floor, go to a room on "
-                       "another floor by lift; the localizer finds the floor after the ride from the plates"},
-      {"map", "", "text-map YAML (its occupancy_map names the grid) [<world dir>/../maps/<world name>.text_map.yaml]; "
-                  "with --building the maps building file [<building dir>/../maps/<building name>.building.yaml]"},
-      {"trials", "30", "number of trials (random start pose and room)"},
-      {"seed", "1", "experiment seed; trial i runs with a seed derived from it"},
-      {"first-trial", "0", "index of the first trial (to split a run: --first-trial 10 --trials 10 runs trials 10-19)"},
-      {"json", "", "write the results as JSON to this file"},
-      {"method", "text_amcl", "localizer: text_amcl (laser + camera plates) or amcl (laser only)"},
-      {"camera-hz", "0", "camera rate, Hz (0: the world's)"},
-      {"speed-mps", "0.4", "cruise speed of the path follower, m/s"},
-      {"look-ahead-m", "0.8", "pure-pursuit look-ahead, m"},
-      {"success-m", "0.3", "success: the true final position within this of the goal, m"},
-  };
+struct GotoArgs {
+  std::string world, building, map, json, method = "text_amcl";
+  GotoEvalOptions options;  // the numbers, bound directly
+};
+
+void AddGotoOptions(CLI::App* cmd, GotoArgs* a) {
+  GotoEvalOptions& o = a->options;
+  cmd->add_option("--world", a->world, "world file with `corridors` (worlds/*.yaml, docs/world-format.md); or --building");
+  cmd->add_option("--building", a->building, "building file of worlds (worlds/*.building.yaml): start on a random floor, "
+                  "go to a room on another floor by lift; the localizer finds the floor after the ride from the plates");
+  cmd->add_option("--map", a->map, "text-map YAML (its occupancy_map names the grid) [<world dir>/../maps/<world name>"
+                  ".text_map.yaml]; with --building the maps building file [<building dir>/../maps/<building name>"
+                  ".building.yaml]");
+  cmd->add_option("--trials", o.trials, "number of trials (random start pose and room)")->capture_default_str()
+      ->transform(tools::WholeNumber(1));
+  cmd->add_option("--seed", o.seed, "experiment seed; trial i runs with a seed derived from it")->capture_default_str()
+      ->transform(tools::Seed());
+  cmd->add_option("--first-trial", o.first_trial, "index of the first trial (to split a run: --first-trial 10 --trials "
+                  "10 runs trials 10-19)")->capture_default_str()->transform(tools::WholeNumber(0));
+  cmd->add_option("--json", a->json, "write the results as JSON to this file")->check(tools::InExistingFolder());
+  cmd->add_option("--method", a->method, "localizer: text_amcl (laser + camera plates) or amcl (laser only)")
+      ->capture_default_str()->check(CLI::IsMember({"text_amcl", "amcl"}));
+  cmd->add_option("--camera-hz", o.camera_rate_hz, "camera rate, Hz (0: the world's)")->capture_default_str()
+      ->check(tools::Number(0.0));
+  cmd->add_option("--speed-mps", o.go.follower.cruise_speed_mps, "cruise speed of the path follower, m/s")
+      ->capture_default_str()->check(tools::PositiveNumber());
+  cmd->add_option("--look-ahead-m", o.go.follower.look_ahead_m, "pure-pursuit look-ahead, m")->capture_default_str()
+      ->check(tools::PositiveNumber());
+  cmd->add_option("--success-m", o.success_distance_m, "success: the true final position within this of the goal, m")
+      ->capture_default_str()->check(tools::PositiveNumber());
 }
 
 void PrintTable(const GotoEvalResult& r, const GotoEvalOptions& o) {
@@ -75,118 +88,131 @@ void PrintTable(const GotoEvalResult& r, const GotoEvalOptions& o) {
   }
 }
 
-void WritePose(JsonWriter* json, const std::string& key, const Pose2D& p) {
-  json->Key(key).BeginObject().Field("x_m", p.x_m).Field("y_m", p.y_m).Field("theta_rad", p.theta_rad).EndObject();
+Json PoseJson(const Pose2D& p) { return {{"x_m", p.x_m}, {"y_m", p.y_m}, {"theta_rad", p.theta_rad}}; }
+
+Json OptionsJson(const GotoEvalOptions& o) {
+  Json j;
+  j["trials"] = o.trials;
+  j["first_trial"] = o.first_trial;
+  j["seed"] = o.seed;
+  j["method"] = o.use_text ? "text_amcl" : "amcl";
+  j["camera_rate_hz"] = o.camera_rate_hz;
+  j["success_distance_m"] = o.success_distance_m;
+  j["initial_std_m"] = o.initial_std_m;
+  j["initial_std_rad"] = o.initial_std_rad;
+  j["cruise_speed_mps"] = o.go.follower.cruise_speed_mps;
+  j["look_ahead_m"] = o.go.follower.look_ahead_m;
+  j["clearance_m"] = o.go.planner.clearance_m;
+  j["preferred_clearance_m"] = o.go.planner.preferred_clearance_m;
+  j["wall_cost_weight"] = o.go.planner.wall_cost_weight;
+  return j;
 }
 
-void WriteJson(const GotoEvalResult& r, const GotoEvalOptions& o, const std::string& world_path,
-               const std::string& map_path, const std::string& command_line, JsonWriter* json) {
+Json SummaryJson(const GotoEvalResult& r) {
   const GotoSummary s = Summarize(r);
-  json->BeginObject();
-  json->Field("experiment", "goto").Field("command_line", command_line).Field("world", world_path);
-  json->Field("map", map_path).Field("world_name", r.world_name);
-  json->Key("options").BeginObject();
-  json->Field("trials", o.trials).Field("first_trial", o.first_trial).Field("seed", o.seed);
-  json->Field("method", o.use_text ? "text_amcl" : "amcl").Field("camera_rate_hz", o.camera_rate_hz);
-  json->Field("success_distance_m", o.success_distance_m).Field("initial_std_m", o.initial_std_m);
-  json->Field("initial_std_rad", o.initial_std_rad).Field("cruise_speed_mps", o.go.follower.cruise_speed_mps);
-  json->Field("look_ahead_m", o.go.follower.look_ahead_m).Field("clearance_m", o.go.planner.clearance_m);
-  json->Field("preferred_clearance_m", o.go.planner.preferred_clearance_m);
-  json->Field("wall_cost_weight", o.go.planner.wall_cost_weight);
-  json->EndObject();
-  json->Key("summary").BeginObject();
-  json->Field("trials", s.trials).Field("successes", s.successes).Field("arrived", s.arrived);
-  json->Field("bumped", s.bumped).Field("median_distance_m", s.median_distance_m);
-  json->Field("max_distance_m", s.max_distance_m).Field("median_abs_yaw_rad", s.median_abs_yaw_rad);
-  json->Field("median_travel_m", s.median_travel_m).Field("median_sim_s", s.median_sim_s);
-  json->Field("median_plan_s", s.median_plan_s).Field("max_plan_s", s.max_plan_s);
-  json->Field("min_plan_clearance_m", s.min_plan_clearance_m);
-  json->Field("median_estimate_error_m", s.median_estimate_error_m).Field("seconds", r.seconds);
+  Json j;
+  j["trials"] = s.trials;
+  j["successes"] = s.successes;
+  j["arrived"] = s.arrived;
+  j["bumped"] = s.bumped;
+  j["median_distance_m"] = s.median_distance_m;
+  j["max_distance_m"] = s.max_distance_m;
+  j["median_abs_yaw_rad"] = s.median_abs_yaw_rad;
+  j["median_travel_m"] = s.median_travel_m;
+  j["median_sim_s"] = s.median_sim_s;
+  j["median_plan_s"] = s.median_plan_s;
+  j["max_plan_s"] = s.max_plan_s;
+  j["min_plan_clearance_m"] = s.min_plan_clearance_m;
+  j["median_estimate_error_m"] = s.median_estimate_error_m;
+  j["seconds"] = r.seconds;
   if (r.floors.size() > 1) {
-    json->Field("rides", s.rides).Field("found_floor", s.found_floor);
-    json->Field("median_searched_m", s.median_searched_m).Field("max_searched_m", s.max_searched_m);
+    j["rides"] = s.rides;
+    j["found_floor"] = s.found_floor;
+    j["median_searched_m"] = s.median_searched_m;
+    j["max_searched_m"] = s.max_searched_m;
   }
-  json->EndObject();
-  json->Key("trials").BeginArray();
-  for (const GotoTrial& t : r.trials) {
-    json->BeginObject();
-    json->Field("index", t.index).Field("seed", t.seed);
-    WritePose(json, "start", t.start_pose);
-    json->Field("room", t.room);
-    if (r.floors.size() > 1) {
-      json->Field("start_floor", t.start_floor).Field("room_floor", t.room_floor).Field("lift", t.lift);
-      json->Field("instruction", t.instruction).Field("rode", t.rode);
-      json->Field("lift_stop_distance_m", t.lift_stop_distance_m).Field("searched_m", t.searched_m);
-      json->Field("found_floor", t.found_floor);
-    }
-    WritePose(json, "goal", t.goal);
-    json->Field("success", t.success).Field("arrived", t.arrived).Field("outcome", t.outcome);
-    json->Field("plan_length_m", t.plan_length_m).Field("plan_seconds", t.plan_seconds);
-    json->Field("plan_min_clearance_m", t.plan_min_clearance_m);
-    json->Field("plan_mean_clearance_m", t.plan_mean_clearance_m).Field("replans", t.replans);
-    WritePose(json, "final_pose", t.final_pose);
-    WritePose(json, "final_estimate", t.final_estimate);
-    json->Field("distance_m", t.distance_m).Field("along_m", t.along_m).Field("across_m", t.across_m);
-    json->Field("yaw_error_rad", t.yaw_error_rad).Field("estimate_error_m", t.estimate_error_m);
-    json->Field("travel_m", t.travel_m).Field("sim_seconds", t.sim_seconds).Field("wall_seconds", t.wall_seconds);
-    json->Field("bumped", t.bumped).Field("plate_updates", t.plate_updates);
-    json->EndObject();
+  return j;
+}
+
+Json TrialJson(const GotoTrial& t, bool building) {
+  Json j;
+  j["index"] = t.index;
+  j["seed"] = t.seed;
+  j["start"] = PoseJson(t.start_pose);
+  j["room"] = t.room;
+  if (building) {
+    j["start_floor"] = t.start_floor;
+    j["room_floor"] = t.room_floor;
+    j["lift"] = t.lift;
+    j["instruction"] = t.instruction;
+    j["rode"] = t.rode;
+    j["lift_stop_distance_m"] = t.lift_stop_distance_m;
+    j["searched_m"] = t.searched_m;
+    j["found_floor"] = t.found_floor;
   }
-  json->EndArray();
-  json->EndObject();
+  j["goal"] = PoseJson(t.goal);
+  j["success"] = t.success;
+  j["arrived"] = t.arrived;
+  j["outcome"] = t.outcome;
+  j["plan_length_m"] = t.plan_length_m;
+  j["plan_seconds"] = t.plan_seconds;
+  j["plan_min_clearance_m"] = t.plan_min_clearance_m;
+  j["plan_mean_clearance_m"] = t.plan_mean_clearance_m;
+  j["replans"] = t.replans;
+  j["final_pose"] = PoseJson(t.final_pose);
+  j["final_estimate"] = PoseJson(t.final_estimate);
+  j["distance_m"] = t.distance_m;
+  j["along_m"] = t.along_m;
+  j["across_m"] = t.across_m;
+  j["yaw_error_rad"] = t.yaw_error_rad;
+  j["estimate_error_m"] = t.estimate_error_m;
+  j["travel_m"] = t.travel_m;
+  j["sim_seconds"] = t.sim_seconds;
+  j["wall_seconds"] = t.wall_seconds;
+  j["bumped"] = t.bumped;
+  j["plate_updates"] = t.plate_updates;
+  return j;
+}
+
+Json GotoJson(const GotoEvalResult& r, const GotoEvalOptions& o, const std::string& world_path,
+              const std::string& map_path, const std::string& command_line) {
+  Json j;
+  j["experiment"] = "goto";
+  j["command_line"] = command_line;
+  j["world"] = world_path;
+  j["map"] = map_path;
+  j["world_name"] = r.world_name;
+  j["options"] = OptionsJson(o);
+  j["summary"] = SummaryJson(r);
+  j["trials"] = Json::array();
+  for (const GotoTrial& t : r.trials) j["trials"].push_back(TrialJson(t, r.floors.size() > 1));
+  return j;
+}
+
+int RunGoto(const GotoArgs& a, const std::string& command_line) {
+  GotoEvalOptions options = a.options;
+  options.use_text = a.method == "text_amcl";
+  std::string map_path;
+  const LocalizeBuilding building = LoadExperimentBuilding("goto", a.world, a.building, a.map, &map_path);
+  tools::RefuseOverwritingInputs({{"--world", a.world}, {"--building", a.building}, {"--map", map_path}},
+                                 {{"--json", a.json}});  // issue 18: an output never replaces an input
+  const GotoEvalResult result = RunGotoEval(building, options);
+  PrintTable(result, options);
+  if (!a.json.empty()) {
+    const std::string world = a.building.empty() ? a.world : a.building;
+    WriteFileAtomically(a.json, ResultJsonText(GotoJson(result, options, world, map_path, command_line)));
+  }
+  return 0;
 }
 
 }  // namespace
 
-int RunGotoCommand(const std::vector<std::string>& args, const std::string& command_line) {
-  EvalArgs parsed("goto", GotoOptions());
-  parsed.Parse(args);
-  if (parsed.help_requested()) {
-    std::cout << "Go to a random room from a random corridor pose on a floor (grid path planner + pure pursuit on "
-                 "the Text AMCL estimate).\n"
-              << parsed.Usage();
-    return 0;
-  }
-  GotoEvalOptions options;
-  options.trials = parsed.Integer("trials", 1);
-  options.first_trial = parsed.Integer("first-trial", 0);
-  options.seed = parsed.Unsigned("seed");
-  const std::string method = parsed.String("method");
-  if (method != "text_amcl" && method != "amcl") {
-    throw UsageError("goto: --method: '" + method + "' must be text_amcl or amcl");
-  }
-  options.use_text = method == "text_amcl";
-  options.camera_rate_hz = parsed.Number("camera-hz");
-  if (options.camera_rate_hz < 0.0) throw UsageError("goto: --camera-hz must be >= 0");
-  options.go.follower.cruise_speed_mps = parsed.Number("speed-mps");
-  if (options.go.follower.cruise_speed_mps <= 0.0) throw UsageError("goto: --speed-mps must be > 0");
-  options.go.follower.look_ahead_m = parsed.Number("look-ahead-m");
-  if (options.go.follower.look_ahead_m <= 0.0) throw UsageError("goto: --look-ahead-m must be > 0");
-  options.success_distance_m = parsed.Number("success-m");
-  if (options.success_distance_m <= 0.0) throw UsageError("goto: --success-m must be > 0");
-  const std::string json_path = parsed.String("json");
-  if (!json_path.empty()) {
-    const std::filesystem::path parent = std::filesystem::path(json_path).parent_path();
-    if (!parent.empty() && !std::filesystem::is_directory(parent)) {
-      throw UsageError("goto: --json: folder " + parent.string() + " does not exist");
-    }
-  }
-
-  const std::string world_path = parsed.String("world");
-  const std::string building_path = parsed.String("building");
-  std::string map_path;
-  const LocalizeBuilding building =
-      LoadExperimentBuilding("goto", world_path, building_path, parsed.String("map"), &map_path);
-  const GotoEvalResult result = RunGotoEval(building, options);
-  PrintTable(result, options);
-  if (!json_path.empty()) {
-    std::ostringstream out;
-    JsonWriter json(&out);
-    WriteJson(result, options, building_path.empty() ? world_path : building_path, map_path, command_line, &json);
-    out << "\n";
-    WriteFileAtomically(json_path, out.str());
-  }
-  return 0;
+EvalCommand AddGotoCommand(CLI::App* eval, const std::string& command_line) {
+  auto args = std::make_shared<GotoArgs>();
+  CLI::App* go = eval->add_subcommand("goto", "Go to a random room from a random corridor pose on a floor (grid path "
+                                      "planner + pure pursuit on the Text AMCL estimate).");
+  AddGotoOptions(go, args.get());
+  return {go, [args, command_line] { return RunGoto(*args, command_line); }};
 }
 
 }  // namespace doorplate_localization

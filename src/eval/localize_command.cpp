@@ -1,55 +1,61 @@
 // `doorplate_eval localize`: global localization and kidnapped-robot trials (paper Table III) on one world,
 // or on a building of several floors (--building).
 #include <cstdio>
-#include <filesystem>
-#include <iostream>
-#include <sstream>
+#include <memory>
 
 #include "doorplate_localization/maps/map_io.h"
 #include "building_input.h"
+#include "cli_app.h"
 #include "eval_args.h"
 #include "eval_commands.h"
 #include "localize_eval.h"
 #include "localize_eval_json.h"
+#include "output_guard.h"
 
 namespace doorplate_localization {
 namespace {
 
-std::vector<OptionSpec> LocalizeOptions() {
-  return {
-      {"world", "", "world file (worlds/*.yaml, docs/world-format.md); or --building"},
-      {"building", "", "building file of worlds (worlds/*.building.yaml, docs/building-format.md): trials start on a "
-                       "random floor the filter is not told, a kidnap is a ride to a random floor"},
-      {"map", "", "text-map YAML the filter uses (its occupancy_map names the grid) [<world dir>/../maps/<world name>.text_map.yaml]; "
-                  "with --building the maps building file [<building dir>/../maps/<building name>.building.yaml]"},
-      {"method", "text_amcl", "amcl (laser only) or text_amcl (laser + doorplate readings)"},
-      {"trials", "30", "number of trials (random start poses)"},
-      {"seed", "1", "experiment seed; trial i runs with a seed derived from it"},
-      {"json", "", "write the results as JSON to this file"},
-      {"kidnap", "off", "after a successful convergence teleport the robot and measure the recovery (--kidnap alone: on)"},
-      {"max-travel-m", "120", "a search (and a recovery) fails after the robot drove this far"},
-      {"speed-mps", "0.4", "cruise speed of the robot, m/s"},
-      {"drive", "auto", "patrol (one corridor: along a wall, turn at the end, back) or contour (a floor: follow the "
-                        "right wall round corners, into side corridors, out of dead ends); auto: contour when the "
-                        "world lists more than one corridor"},
-      {"known-rooms", "off", "give the text validator the text map's room list (on) or not (off)"},
-      {"camera-hz", "0", "camera rate, Hz (0: the world's)"},
-      {"recognizer", "tesseract", "text recogniser: tesseract or ppocr (the learned one; scripts/fetch_ocr_models.sh)"},
-      {"max-particles", "5000", "filter max_particles (global localization draws this many)"},
-      {"laser-model", "likelihood_field", "laser_model_type: likelihood_field, likelihood_field_prob or beam"},
-  };
-}
+struct LocalizeArgs {
+  std::string world, building, map, method = "text_amcl", json, drive = "auto";
+  std::string recognizer = "tesseract", laser_model = "likelihood_field";
+  LocalizeEvalOptions options;  // the numbers and switches, bound directly
+};
 
-// `--kidnap` may stand alone (a flag) or take on/off; EvalArgs wants a value after every option.
-std::vector<std::string> ExpandKidnapFlag(const std::vector<std::string>& args) {
-  std::vector<std::string> out;
-  for (size_t i = 0; i < args.size(); ++i) {
-    out.push_back(args[i]);
-    if (args[i] != "--kidnap") continue;
-    const bool has_value = i + 1 < args.size() && args[i + 1].compare(0, 2, "--") != 0;
-    if (!has_value) out.push_back("on");
-  }
-  return out;
+void AddLocalizeOptions(CLI::App* cmd, LocalizeArgs* a) {
+  LocalizeEvalOptions& o = a->options;
+  cmd->add_option("--world", a->world, "world file (worlds/*.yaml, docs/world-format.md); or --building");
+  cmd->add_option("--building", a->building, "building file of worlds (worlds/*.building.yaml, docs/building-format.md): "
+                  "trials start on a random floor the filter is not told, a kidnap is a ride to a random floor");
+  cmd->add_option("--map", a->map, "text-map YAML the filter uses (its occupancy_map names the grid) [<world dir>/../maps/"
+                  "<world name>.text_map.yaml]; with --building the maps building file [<building dir>/../maps/"
+                  "<building name>.building.yaml]");
+  cmd->add_option("--method", a->method, "amcl (laser only) or text_amcl (laser + doorplate readings)")
+      ->capture_default_str()->check(CLI::IsMember({"amcl", "text_amcl"}));
+  cmd->add_option("--trials", o.trials, "number of trials (random start poses)")->capture_default_str()
+      ->transform(tools::WholeNumber(1));
+  cmd->add_option("--seed", o.seed, "experiment seed; trial i runs with a seed derived from it")->capture_default_str()
+      ->transform(tools::Seed());
+  cmd->add_option("--json", a->json, "write the results as JSON to this file")->check(tools::InExistingFolder());
+  cmd->add_option("--kidnap", o.kidnap, "after a successful convergence teleport the robot and measure the recovery "
+                  "(--kidnap alone: on)")->expected(0, 1)->default_str("on")->option_text("[on|off]=off")
+      ->transform(tools::OnOff());
+  cmd->add_option("--max-travel-m", o.max_travel_m, "a search (and a recovery) fails after the robot drove this far")
+      ->capture_default_str()->check(tools::PositiveNumber());
+  cmd->add_option("--speed-mps", o.speed_mps, "cruise speed of the robot, m/s")->capture_default_str()
+      ->check(tools::PositiveNumber());
+  cmd->add_option("--drive", a->drive, "patrol (one corridor: along a wall, turn at the end, back) or contour (a floor: "
+                  "follow the right wall round corners, into side corridors, out of dead ends); auto: contour when the "
+                  "world lists more than one corridor")->capture_default_str();
+  cmd->add_option("--known-rooms", o.known_rooms, "give the text validator the text map's room list (on) or not (off)")
+      ->transform(tools::OnOff())->default_str("off");
+  cmd->add_option("--camera-hz", o.camera_rate_hz, "camera rate, Hz (0: the world's)")->capture_default_str()
+      ->check(tools::Number(0.0));
+  cmd->add_option("--recognizer", a->recognizer, "text recogniser: tesseract or ppocr (the learned one; "
+                  "scripts/fetch_ocr_models.sh)")->capture_default_str();
+  cmd->add_option("--max-particles", o.filter.filter.max_particles, "filter max_particles (global localization draws "
+                  "this many)")->capture_default_str()->transform(tools::WholeNumber(1));
+  cmd->add_option("--laser-model", a->laser_model, "laser_model_type: likelihood_field, likelihood_field_prob or beam")
+      ->capture_default_str();
 }
 
 void PrintSummary(const LocalizeEvalResult& r, const LocalizeEvalOptions& o) {
@@ -91,78 +97,50 @@ void PrintSummary(const LocalizeEvalResult& r, const LocalizeEvalOptions& o) {
   std::printf("  %.0f s\n", r.seconds);
 }
 
-}  // namespace
-
-int RunLocalizeCommand(const std::vector<std::string>& args, const std::string& command_line) {
-  EvalArgs parsed("localize", LocalizeOptions());
-  parsed.Parse(ExpandKidnapFlag(args));
-  if (parsed.help_requested()) {
-    std::cout << "Global localization and kidnapped-robot trials on a simulated corridor (paper Table III) or floor.\n"
-              << parsed.Usage();
-    return 0;
-  }
-  LocalizeEvalOptions options;
-  const std::string method = parsed.String("method");
-  if (method == "amcl") {
-    options.method = LocalizeMethod::kAmcl;
-  } else if (method != "text_amcl") {
-    throw UsageError("localize: --method: '" + method + "' must be amcl or text_amcl");
-  }
-  options.trials = parsed.Integer("trials", 1);
-  options.seed = parsed.Unsigned("seed");
-  options.kidnap = parsed.OnOff("kidnap");
-  options.max_travel_m = parsed.Number("max-travel-m");
-  if (options.max_travel_m <= 0.0) throw UsageError("localize: --max-travel-m must be > 0");
-  options.speed_mps = parsed.Number("speed-mps");
-  if (options.speed_mps <= 0.0) throw UsageError("localize: --speed-mps must be > 0");
-  options.known_rooms = parsed.OnOff("known-rooms");
-  options.camera_rate_hz = parsed.Number("camera-hz");
+int RunLocalize(const LocalizeArgs& a, const std::string& command_line) {
+  LocalizeEvalOptions options = a.options;
+  options.method = a.method == "amcl" ? LocalizeMethod::kAmcl : LocalizeMethod::kTextAmcl;
   try {
-    options.extractor.recognizer_type = ParseTextRecognizerType(parsed.String("recognizer"), "localize: --recognizer");
+    options.extractor.recognizer_type = ParseTextRecognizerType(a.recognizer, "localize: --recognizer");
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
   UseReadingScheduleFor(options.extractor.recognizer_type, &options.extractor.tracker);
-  if (options.camera_rate_hz < 0.0) throw UsageError("localize: --camera-hz must be >= 0");
-  options.filter.filter.max_particles = parsed.Integer("max-particles", 1);
   try {
-    options.filter.laser_model_type = ParseLaserModelType(parsed.String("laser-model"));
+    options.filter.laser_model_type = ParseLaserModelType(a.laser_model);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("localize: --laser-model: ") + e.what());
   }
-  const std::string json_path = parsed.String("json");
-  if (!json_path.empty()) {
-    const std::filesystem::path parent = std::filesystem::path(json_path).parent_path();
-    if (!parent.empty() && !std::filesystem::is_directory(parent)) {
-      throw UsageError("localize: --json: folder " + parent.string() + " does not exist");
-    }
-  }
 
-  const std::string world_path = parsed.String("world");
-  const std::string building_path = parsed.String("building");
   std::string map_path;
-  const LocalizeBuilding building =
-      LoadExperimentBuilding("localize", world_path, building_path, parsed.String("map"), &map_path);
-  const std::string drive = parsed.String("drive");
+  const LocalizeBuilding building = LoadExperimentBuilding("localize", a.world, a.building, a.map, &map_path);
   try {
-    options.drive = drive == "auto" ? (building.worlds.front().corridors.size() > 1 ? LocalizeDrive::kContour
-                                                                                    : LocalizeDrive::kPatrol)
-                                    : ParseLocalizeDrive(drive);
+    options.drive = a.drive == "auto" ? (building.worlds.front().corridors.size() > 1 ? LocalizeDrive::kContour
+                                                                                      : LocalizeDrive::kPatrol)
+                                      : ParseLocalizeDrive(a.drive);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("localize: --drive: ") + e.what() + " (or auto)");
   }
 
+  tools::RefuseOverwritingInputs({{"--world", a.world}, {"--building", a.building}, {"--map", map_path}},
+                                 {{"--json", a.json}});  // issue 18: an output never replaces an input
   const LocalizeEvalResult result = RunLocalizeEval(building, options);
   PrintSummary(result, options);
-  if (!json_path.empty()) {
-    std::ostringstream out;
-    JsonWriter json(&out);
-    WriteLocalizeEvalJson(result, {building_path.empty() ? world_path : building_path, map_path, command_line, options},
-                          &json);
-    out << "\n";
-    WriteFileAtomically(json_path, out.str());
+  if (!a.json.empty()) {
+    const LocalizeEvalRunInfo info{a.building.empty() ? a.world : a.building, map_path, command_line, options};
+    WriteFileAtomically(a.json, ResultJsonText(LocalizeEvalJson(result, info)));
   }
   return 0;
+}
+
+}  // namespace
+
+EvalCommand AddLocalizeCommand(CLI::App* eval, const std::string& command_line) {
+  auto args = std::make_shared<LocalizeArgs>();
+  CLI::App* localize = eval->add_subcommand(
+      "localize", "Global localization and kidnapped-robot trials on a simulated corridor (paper Table III) or floor.");
+  AddLocalizeOptions(localize, args.get());
+  return {localize, [args, command_line] { return RunLocalize(*args, command_line); }};
 }
 
 }  // namespace doorplate_localization

@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "json_writer.h"
 #include "localize_eval.h"
+#include "result_json.h"
 
 namespace doorplate_localization {
 
@@ -17,6 +17,6 @@ struct LocalizeEvalRunInfo {
   LocalizeEvalOptions options;
 };
 
-void WriteLocalizeEvalJson(const LocalizeEvalResult& result, const LocalizeEvalRunInfo& info, JsonWriter* json);
+Json LocalizeEvalJson(const LocalizeEvalResult& result, const LocalizeEvalRunInfo& info);
 
 }  // namespace doorplate_localization

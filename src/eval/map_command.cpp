@@ -1,11 +1,10 @@
 // `doorplate_eval map`: SLAM of one corridor sweep, laser only (rbpf) or with doorplate text (rbpf_text),
 // measured against the world (paper Table II).
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <iostream>
-#include <sstream>
+#include <memory>
 
+#include "cli_app.h"
+#include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/sim/ground_truth_maps.h"
 #include "doorplate_localization/sim/world_loader.h"
 #include "doorplate_localization/slam/rbpf_slam_options.h"
@@ -14,49 +13,39 @@
 #include "map_eval.h"
 #include "map_eval_json.h"
 #include "map_output.h"
+#include "output_guard.h"
 
 namespace doorplate_localization {
 namespace {
 
-std::vector<OptionSpec> MapOptions() {
-  return {
-      {"world", "", "world file (worlds/*.yaml, docs/world-format.md)", true},
-      {"method", "rbpf_text", "rbpf (laser only) or rbpf_text (with doorplate landmarks)"},
-      {"seed", "1", "experiment seed (simulator and filter seeds are derived from it)"},
-      {"particles", "30", "number of particles"},
-      {"speed-mps", "0.4", "cruise speed of the robot, m/s"},
-      {"max-seconds", "1800", "simulated seconds after which an unfinished drive ends the run"},
-      {"drive", "auto", "sweep (one corridor: out and back), explore (a whole floor: FloorExplorer's passes) "
-                        "or auto (explore when the world lists more than one corridor)"},
-      {"set", "", "SLAM options NAME=VALUE[,NAME=VALUE...] (names: rbpf_slam_options.h, text.<field>)"},
-      {"progress-s", "60", "a progress line on stderr every this many simulated seconds (0: none)"},
-      {"json", "", "write the results as JSON to this file"},
-      {"out-dir", "", "write map.pgm/.yaml, text_map.yaml and map.png into this folder"},
-  };
-}
+struct MapArgs {
+  std::string world, method = "rbpf_text", drive = "auto", json, out_dir;
+  std::uint64_t seed = 1;
+  int particles = 30;
+  double speed_mps = 0.4, max_seconds = 1800, progress_s = 60;
+  std::vector<std::string> sets;
+};
 
-void ApplySets(const std::string& sets, TextSlamOptions* options) {
-  std::stringstream list(sets);
-  std::string item;
-  while (std::getline(list, item, ',')) {
-    if (item.empty()) continue;
-    const std::size_t eq = item.find('=');
-    if (eq == std::string::npos) throw UsageError("map: --set: '" + item + "' is not NAME=VALUE");
-    const std::string name = item.substr(0, eq), value = item.substr(eq + 1);
-    std::size_t used = 0;
-    double number = 0.0;
-    try {
-      number = std::stod(value, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != value.size() || value.empty()) throw UsageError("map: --set " + name + ": '" + value + "' is not a number");
-    try {
-      SetTextSlamOption(name, number, options);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("map: --set: ") + e.what());
-    }
-  }
+void AddMapOptions(CLI::App* map, MapArgs* a) {
+  map->add_option("--world", a->world, "world file (worlds/*.yaml, docs/world-format.md)")->required();
+  map->add_option("--method", a->method, "rbpf (laser only) or rbpf_text (with doorplate landmarks)")
+      ->capture_default_str();
+  map->add_option("--seed", a->seed, "experiment seed (simulator and filter seeds are derived from it)")
+      ->capture_default_str()->transform(tools::Seed());
+  map->add_option("--particles", a->particles, "number of particles")->capture_default_str()
+      ->transform(tools::WholeNumber(1));
+  map->add_option("--speed-mps", a->speed_mps, "cruise speed of the robot, m/s")->capture_default_str()
+      ->check(tools::PositiveNumber());
+  map->add_option("--max-seconds", a->max_seconds, "simulated seconds after which an unfinished drive ends the run")
+      ->capture_default_str()->check(tools::PositiveNumber());
+  map->add_option("--drive", a->drive, "sweep (one corridor: out and back), explore (a whole floor: FloorExplorer's "
+                  "passes) or auto (explore when the world lists more than one corridor)")->capture_default_str();
+  map->add_option("--set", a->sets, "SLAM options NAME=VALUE[,NAME=VALUE...] (names: rbpf_slam_options.h, "
+                  "text.<field>; repeatable)")->delimiter(',')->allow_extra_args(false);
+  map->add_option("--progress-s", a->progress_s, "a progress line on stderr every this many simulated seconds (0: none)")
+      ->capture_default_str()->check(tools::Number(0.0));
+  map->add_option("--json", a->json, "write the results as JSON to this file")->check(tools::InExistingFolder());
+  map->add_option("--out-dir", a->out_dir, "write map.pgm/.yaml, text_map.yaml and map.png into this folder");
 }
 
 void PrintSummary(const MapEvalResult& r, MapMethod method, std::uint64_t seed, MapDrive drive) {
@@ -105,19 +94,10 @@ void PrintDrive(const MapEvalResult& r, MapDrive drive) {
   std::printf("\n");
 }
 
-}  // namespace
-
-int RunMapCommand(const std::vector<std::string>& args, const std::string& command_line) {
-  EvalArgs parsed("map", MapOptions());
-  parsed.Parse(args);
-  if (parsed.help_requested()) {
-    std::cout << "SLAM of a simulated corridor sweep, laser only or with doorplate text (paper Table II).\n"
-              << parsed.Usage();
-    return 0;
-  }
+int RunMap(const MapArgs& a, const std::string& command_line) {
   MapEvalOptions options;
   try {
-    options.method = ParseMapMethod(parsed.String("method"));
+    options.method = ParseMapMethod(a.method);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("map: --method: ") + e.what());
   }
@@ -127,50 +107,50 @@ int RunMapCommand(const std::vector<std::string>& args, const std::string& comma
     options.slam.slam = RbpfSlamOptions{};
     options.slam.back_end.enabled = false;
   }
-  options.seed = parsed.Unsigned("seed");
-  options.slam.slam.num_particles = parsed.Integer("particles", 1);
-  options.speed_mps = parsed.Number("speed-mps");
-  if (!(options.speed_mps > 0)) throw UsageError("map: --speed-mps must be > 0");
-  options.max_time_s = parsed.Number("max-seconds");
-  if (!(options.max_time_s > 0)) throw UsageError("map: --max-seconds must be > 0");
-  ApplySets(parsed.String("set"), &options.slam);
-  options.progress_every_s = parsed.Number("progress-s");
-  if (!(options.progress_every_s >= 0)) throw UsageError("map: --progress-s must be >= 0");
-  const std::string drive = parsed.String("drive");
-  const std::string json_path = parsed.String("json");
-  if (!json_path.empty()) {
-    const std::filesystem::path parent = std::filesystem::path(json_path).parent_path();
-    if (!parent.empty() && !std::filesystem::is_directory(parent)) {
-      throw UsageError("map: --json: folder " + parent.string() + " does not exist");
-    }
+  options.seed = a.seed;
+  options.slam.slam.num_particles = a.particles;
+  options.speed_mps = a.speed_mps;
+  options.max_time_s = a.max_seconds;
+  for (const std::string& set : a.sets) {
+    if (set.empty()) continue;
+    tools::ApplySetOption(set, [&](const std::string& name, double v) { SetTextSlamOption(name, v, &options.slam); });
   }
-  const std::string world_path = parsed.String("world");
-  const World world = LoadWorldFile(world_path);
+  options.progress_every_s = a.progress_s;
+  const World world = LoadWorldFile(a.world);
   try {
-    options.drive = drive == "auto" ? (world.corridors.size() > 1 ? MapDrive::kExplore : MapDrive::kSweep)
-                                    : ParseMapDrive(drive);
+    options.drive = a.drive == "auto" ? (world.corridors.size() > 1 ? MapDrive::kExplore : MapDrive::kSweep)
+                                      : ParseMapDrive(a.drive);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("map: --drive: ") + e.what() + " (or auto)");
   }
+  const auto in_out_dir = [&](const char* name) { return a.out_dir.empty() ? std::string() : a.out_dir + "/" + name; };
+  tools::RefuseOverwritingInputs({{"--world", a.world}},  // issue 18: an output never replaces an input
+                                 {{"--json", a.json}, {"--out-dir", in_out_dir("map.pgm")}, {"--out-dir", in_out_dir("map.yaml")},
+                                  {"--out-dir", in_out_dir("text_map.yaml")}, {"--out-dir", in_out_dir("map.png")}});
   const MapEvalResult result = RunMapEval(world, options);
   PrintSummary(result, options.method, options.seed, options.drive);
   PrintDrive(result, options.drive);
-  const std::string out_dir = parsed.String("out-dir");
-  if (!out_dir.empty()) {
+  if (!a.out_dir.empty()) {
     World built = world;
     BuildSurfaces(built);
-    WriteMapOutputs(result, GroundTruthTextMap(built), out_dir);
+    WriteMapOutputs(result, GroundTruthTextMap(built), a.out_dir);
   }
-  if (!json_path.empty()) {
-    std::ofstream out(json_path);
-    if (!out) throw std::runtime_error("cannot write " + json_path);
-    JsonWriter json(&out);
-    WriteMapEvalJson(result, {world_path, command_line, options.method, options.seed,
-                              options.slam.slam.num_particles, options.drive}, &json);
-    out << "\n";
-    if (!out) throw std::runtime_error("error writing " + json_path);
+  if (!a.json.empty()) {
+    const MapEvalRunInfo info{a.world, command_line, options.method, options.seed, options.slam.slam.num_particles,
+                              options.drive};
+    WriteFileAtomically(a.json, ResultJsonText(MapEvalJson(result, info)));
   }
   return 0;
+}
+
+}  // namespace
+
+EvalCommand AddMapCommand(CLI::App* eval, const std::string& command_line) {
+  auto args = std::make_shared<MapArgs>();
+  CLI::App* map =
+      eval->add_subcommand("map", "SLAM of a simulated corridor sweep, laser only or with doorplate text (paper Table II).");
+  AddMapOptions(map, args.get());
+  return {map, [args, command_line] { return RunMap(*args, command_line); }};
 }
 
 }  // namespace doorplate_localization

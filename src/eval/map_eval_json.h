@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "json_writer.h"
 #include "map_eval.h"
+#include "result_json.h"
 
 namespace doorplate_localization {
 
@@ -20,6 +20,6 @@ struct MapEvalRunInfo {
 
 // One object: length_true_m, length_est_m, length_accuracy, width_true_m, width_est_m, width_accuracy,
 // plates_true, plates_mapped, plate_position_rmse_m, plate_max_error_m, seconds, ... and the per-plate list.
-void WriteMapEvalJson(const MapEvalResult& result, const MapEvalRunInfo& info, JsonWriter* json);
+Json MapEvalJson(const MapEvalResult& result, const MapEvalRunInfo& info);
 
 }  // namespace doorplate_localization

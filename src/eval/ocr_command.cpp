@@ -1,10 +1,10 @@
 // `doorplate_eval ocr`: the text-reading experiment (paper Table I, Figure 12) on one world file.
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <iostream>
+#include <memory>
 
+#include "cli_app.h"
+#include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/sim/camera_renderer.h"
 #include "doorplate_localization/sim/world_loader.h"
 #include "doorplate_localization/text/band_geometry.h"
@@ -12,24 +12,39 @@
 #include "eval_commands.h"
 #include "ocr_eval.h"
 #include "ocr_eval_json.h"
+#include "output_guard.h"
 
 namespace doorplate_localization {
 namespace {
 
-std::vector<OptionSpec> OcrOptions() {
-  std::vector<OptionSpec> specs = CommonOptions();
-  specs.push_back({"band", "on", "extractor searches the fixed image band (on) or the full image (off)"});
-  specs.push_back({"known-rooms", "off", "give the validator the world's room list (on) or not (off: open vocabulary)"});
-  specs.push_back({"detector", "mser", "text detector: mser or db (the learned one; scripts/fetch_ocr_models.sh)"});
-  specs.push_back({"recognizer", "tesseract", "recogniser: tesseract or ppocr (the learned one)"});
-  specs.push_back({"ocr-mode", "default", "Tesseract segmentation: line, word, or default (TesseractOcrOptions)"});
-  specs.push_back({"detector-every", "1", "run the Figure 12 detector modes on every n-th frame (0: never)"});
-  specs.push_back({"max-pass-seconds", "1800", "simulated seconds after which an unfinished sweep ends the pass"});
-  specs.push_back({"camera-px", "", "WIDTHxHEIGHT: render at this size instead of the world's (e.g. 1280x720; same "
-                                    "horizontal field of view, derived intrinsics)"});
-  specs.push_back({"band-geometry", "off", "on: band rows from the camera's intrinsics and mount and the world's "
-                                           "plate heights (BandFromGeometry) instead of the fixed fractions"});
-  return specs;
+struct OcrArgs {
+  CommonArgs common;
+  bool band = true, known_rooms = false, band_geometry = false;
+  std::string detector = "mser", recognizer = "tesseract", ocr_mode = "default", camera_px;
+  int detector_every = 1;
+  double max_pass_seconds = 1800;
+};
+
+void AddOcrOptions(CLI::App* ocr, OcrArgs* a) {
+  AddCommonOptions(ocr, &a->common);
+  ocr->add_option("--band", a->band, "extractor searches the fixed image band (on) or the full image (off)")
+      ->transform(tools::OnOff())->default_str("on");
+  ocr->add_option("--known-rooms", a->known_rooms, "give the validator the world's room list (on) or not (off: open "
+                  "vocabulary)")->transform(tools::OnOff())->default_str("off");
+  ocr->add_option("--detector", a->detector, "text detector: mser or db (the learned one; scripts/fetch_ocr_models.sh)")
+      ->capture_default_str();
+  ocr->add_option("--recognizer", a->recognizer, "recogniser: tesseract or ppocr (the learned one)")->capture_default_str();
+  ocr->add_option("--ocr-mode", a->ocr_mode, "Tesseract segmentation: line, word, or default (TesseractOcrOptions)")
+      ->capture_default_str()->check(CLI::IsMember({"line", "word", "default"}));
+  ocr->add_option("--detector-every", a->detector_every, "run the Figure 12 detector modes on every n-th frame (0: never)")
+      ->capture_default_str()->transform(tools::WholeNumber(0));
+  ocr->add_option("--max-pass-seconds", a->max_pass_seconds, "simulated seconds after which an unfinished sweep ends "
+                  "the pass")->capture_default_str()->check(tools::PositiveNumber());
+  ocr->add_option("--camera-px", a->camera_px, "WIDTHxHEIGHT: render at this size instead of the world's (e.g. "
+                  "1280x720; same horizontal field of view, derived intrinsics)");
+  ocr->add_option("--band-geometry", a->band_geometry, "on: band rows from the camera's intrinsics and mount and the "
+                  "world's plate heights (BandFromGeometry) instead of the fixed fractions")
+      ->transform(tools::OnOff())->default_str("off");
 }
 
 // "1280x720" → the world's camera at that size with its other intrinsics derived again.
@@ -98,65 +113,51 @@ void PrintSummary(const OcrEvalResult& r, const OcrEvalOptions& o) {
   }
 }
 
-}  // namespace
-
-int RunOcrCommand(const std::vector<std::string>& args, const std::string& command_line) {
-  EvalArgs parsed("ocr", OcrOptions());
-  parsed.Parse(args);
-  if (parsed.help_requested()) {
-    std::cout << "Text reading on a simulated corridor sweep (paper Table I, Figure 12).\n" << parsed.Usage();
-    return 0;
-  }
-  const CommonArgs common = ReadCommonArgs(parsed);
+int RunOcr(const OcrArgs& a, const std::string& command_line) {
+  const CommonArgs& common = a.common;
   OcrEvalOptions options;
   options.passes = common.passes;
   options.seed = common.seed;
   options.speed_mps = common.speed_mps;
   options.dump_dir = common.dump_dir;
-  options.band = parsed.OnOff("band");
-  options.known_rooms = parsed.OnOff("known-rooms");
-  const std::string ocr_mode = parsed.String("ocr-mode");
-  if (ocr_mode == "line") {
-    options.extractor.ocr.line_mode = OcrLineMode::kSingleLine;
-  } else if (ocr_mode == "word") {
-    options.extractor.ocr.line_mode = OcrLineMode::kSingleWord;
-  } else if (ocr_mode != "default") {
-    throw UsageError("ocr: --ocr-mode: '" + ocr_mode + "' must be line, word or default");
-  }
+  options.band = a.band;
+  options.known_rooms = a.known_rooms;
+  if (a.ocr_mode == "line") options.extractor.ocr.line_mode = OcrLineMode::kSingleLine;
+  if (a.ocr_mode == "word") options.extractor.ocr.line_mode = OcrLineMode::kSingleWord;
   try {
-    options.extractor.detector_type = ParseTextDetectorType(parsed.String("detector"), "ocr: --detector");
-    options.extractor.recognizer_type = ParseTextRecognizerType(parsed.String("recognizer"), "ocr: --recognizer");
+    options.extractor.detector_type = ParseTextDetectorType(a.detector, "ocr: --detector");
+    options.extractor.recognizer_type = ParseTextRecognizerType(a.recognizer, "ocr: --recognizer");
     UseReadingScheduleFor(options.extractor.recognizer_type, &options.extractor.tracker);
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
-  options.detector_every_n_frames = parsed.Integer("detector-every", 0);
-  options.max_pass_time_s = parsed.Number("max-pass-seconds");
-  if (options.max_pass_time_s <= 0) throw UsageError("ocr: --max-pass-seconds must be > 0");
+  options.detector_every_n_frames = a.detector_every;
+  options.max_pass_time_s = a.max_pass_seconds;
 
-  if (!common.json_path.empty()) {
-    const std::filesystem::path parent = std::filesystem::path(common.json_path).parent_path();
-    if (!parent.empty() && !std::filesystem::is_directory(parent)) {
-      throw UsageError("ocr: --json: folder " + parent.string() + " does not exist");
-    }
-  }
   World world = LoadWorldFile(common.world_path);
-  if (!parsed.String("camera-px").empty()) SetCameraSize(parsed.String("camera-px"), &world);
-  if (parsed.OnOff("band-geometry")) {
+  if (!a.camera_px.empty()) SetCameraSize(a.camera_px, &world);
+  if (a.band_geometry) {
     options.extractor.detector.band = BandForWorld(world);
     std::printf("band rows [%d, %d) of %d from geometry\n", options.extractor.detector.band.top_px,
                 options.extractor.detector.band.bottom_px, world.sensors.camera.height_px);
   }
+  tools::RefuseOverwritingInputs({{"--world", common.world_path}},  // issue 18: an output never replaces an input
+                                 {{"--json", common.json_path}});
   const OcrEvalResult result = RunOcrEval(world, options);
   PrintSummary(result, options);
   if (!common.json_path.empty()) {
-    std::ofstream out(common.json_path);
-    if (!out) throw std::runtime_error("cannot write " + common.json_path);
-    JsonWriter json(&out);
-    WriteOcrEvalJson(result, {common.world_path, command_line, options}, &json);
-    if (!out) throw std::runtime_error("error writing " + common.json_path);
+    WriteFileAtomically(common.json_path, ResultJsonText(OcrEvalJson(result, {common.world_path, command_line, options})));
   }
   return 0;
+}
+
+}  // namespace
+
+EvalCommand AddOcrCommand(CLI::App* eval, const std::string& command_line) {
+  auto args = std::make_shared<OcrArgs>();
+  CLI::App* ocr = eval->add_subcommand("ocr", "Text reading on a simulated corridor sweep (paper Table I, Figure 12).");
+  AddOcrOptions(ocr, args.get());
+  return {ocr, [args, command_line] { return RunOcr(*args, command_line); }};
 }
 
 }  // namespace doorplate_localization

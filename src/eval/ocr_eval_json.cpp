@@ -5,66 +5,63 @@ namespace {
 
 double Ratio(double numerator, double denominator) { return denominator > 0 ? numerator / denominator : 0.0; }
 
-void WriteDetector(const DetectorModeStats& d, JsonWriter* json) {
+Json DetectorJson(const DetectorModeStats& d) {
   const int other_frames = d.frames - d.frames_plate_in_view;
-  json->BeginObject()
-      .Field("name", d.name)
-      .Field("band", d.band)
-      .Field("nms", d.nms)
-      .Field("frames", d.frames)
-      .Field("boxes_per_frame", Ratio(static_cast<double>(d.boxes), d.frames))
-      .Field("frames_plate_in_view", d.frames_plate_in_view)
-      .Field("boxes_per_frame_plate_in_view", Ratio(static_cast<double>(d.boxes_plate_in_view), d.frames_plate_in_view))
-      .Field("boxes_per_frame_no_plate",
-             Ratio(static_cast<double>(d.boxes - d.boxes_plate_in_view), other_frames))
-      .Field("ms_per_frame", Ratio(1000.0 * d.seconds, d.frames))
-      .EndObject();
+  Json json;
+  json["name"] = d.name;
+  json["band"] = d.band;
+  json["nms"] = d.nms;
+  json["frames"] = d.frames;
+  json["boxes_per_frame"] = Ratio(static_cast<double>(d.boxes), d.frames);
+  json["frames_plate_in_view"] = d.frames_plate_in_view;
+  json["boxes_per_frame_plate_in_view"] = Ratio(static_cast<double>(d.boxes_plate_in_view), d.frames_plate_in_view);
+  json["boxes_per_frame_no_plate"] = Ratio(static_cast<double>(d.boxes - d.boxes_plate_in_view), other_frames);
+  json["ms_per_frame"] = Ratio(1000.0 * d.seconds, d.frames);
+  return json;
 }
 
-void WriteEvent(const OcrEvalEvent& e, JsonWriter* json) {
-  json->BeginObject()
-      .Field("kind", e.kind)
-      .Field("pass", e.pass)
-      .Field("stamp_s", e.stamp_s)
-      .Field("reported", e.reported)
-      .Field("truth", e.truth)
-      .Field("plate", e.plate);
-  json->Key("box_px").BeginArray().Value(e.box_px.x).Value(e.box_px.y).Value(e.box_px.width).Value(e.box_px.height).EndArray();
-  json->Field("image", e.image).EndObject();
+Json EventJson(const OcrEvalEvent& e) {
+  Json json;
+  json["kind"] = e.kind;
+  json["pass"] = e.pass;
+  json["stamp_s"] = e.stamp_s;
+  json["reported"] = e.reported;
+  json["truth"] = e.truth;
+  json["plate"] = e.plate;
+  json["box_px"] = {e.box_px.x, e.box_px.y, e.box_px.width, e.box_px.height};
+  json["image"] = e.image;
+  return json;
 }
 
-void WritePass(const OcrPassResult& p, const std::vector<PlateTruth>& plates, JsonWriter* json) {
+Json PassJson(const OcrPassResult& p, const std::vector<PlateTruth>& plates) {
   const PassScore& s = p.score;
-  json->BeginObject()
-      .Field("seed", p.seed)
-      .Field("sweep_done", p.sweep_done)
-      .Field("plates_total", s.plates_passed)
-      .Field("plates_correct", s.plates_correct)
-      .Field("false_reads", s.false_reads)
-      .Field("spurious", s.spurious)
-      .Field("duplicates", s.duplicates)
-      .Field("reports", s.reports)
-      .Field("frames", p.frames)
-      .Field("sim_seconds", p.sim_seconds)
-      .Field("seconds", p.wall_seconds);
-  json->Key("plates").BeginArray();
+  Json json;
+  json["seed"] = p.seed;
+  json["sweep_done"] = p.sweep_done;
+  json["plates_total"] = s.plates_passed;
+  json["plates_correct"] = s.plates_correct;
+  json["false_reads"] = s.false_reads;
+  json["spurious"] = s.spurious;
+  json["duplicates"] = s.duplicates;
+  json["reports"] = s.reports;
+  json["frames"] = p.frames;
+  json["sim_seconds"] = p.sim_seconds;
+  json["seconds"] = p.wall_seconds;
+  json["plates"] = Json::array();
   for (size_t i = 0; i < plates.size(); ++i) {
     const PlatePassRecord& r = s.plates[i];
-    json->BeginObject()
-        .Field("plate", plates[i].label)
-        .Field("text", plates[i].text)
-        .Field("passed", r.passed)
-        .Field("correct", r.passed && r.correct_reports > 0);
-    json->Key("reported").BeginArray();
-    for (const std::string& text : r.reported_texts) json->Value(text);
-    json->EndArray().EndObject();
+    json["plates"].push_back({{"plate", plates[i].label},
+                              {"text", plates[i].text},
+                              {"passed", r.passed},
+                              {"correct", r.passed && r.correct_reports > 0},
+                              {"reported", r.reported_texts}});
   }
-  json->EndArray().EndObject();
+  return json;
 }
 
 }  // namespace
 
-void WriteOcrEvalJson(const OcrEvalResult& r, const OcrEvalRunInfo& info, JsonWriter* json) {
+Json OcrEvalJson(const OcrEvalResult& r, const OcrEvalRunInfo& info) {
   int false_reads = 0, spurious = 0, duplicates = 0, reports = 0;
   double sim_seconds = 0.0, wall_seconds = 0.0;
   for (const OcrPassResult& p : r.passes) {
@@ -76,41 +73,39 @@ void WriteOcrEvalJson(const OcrEvalResult& r, const OcrEvalRunInfo& info, JsonWr
     wall_seconds += p.wall_seconds;
   }
   const int frames = r.Frames();
-  json->BeginObject()
-      .Field("command", "ocr")
-      .Field("world", r.world_name)
-      .Field("world_file", info.world_file)
-      .Field("command_line", info.command_line)
-      .Field("seed", info.options.seed)
-      .Field("passes", info.options.passes)
-      .Field("speed_mps", info.options.speed_mps)
-      .Field("band", info.options.band)
-      .Field("known_rooms", info.options.known_rooms)
-      .Field("detector", ToString(info.options.extractor.detector_type))
-      .Field("recognizer", ToString(info.options.extractor.recognizer_type))
-      .Field("ocr_mode", info.options.extractor.ocr.line_mode == OcrLineMode::kSingleWord ? "word" : "line")
-      .Field("plates_in_world", static_cast<int>(r.plates.size()))
-      .Field("plates_total", r.PlatesTotal())
-      .Field("plates_correct", r.PlatesCorrect())
-      .Field("accuracy", Ratio(r.PlatesCorrect(), r.PlatesTotal()))
-      .Field("false_reads", false_reads)
-      .Field("spurious", spurious)
-      .Field("duplicates", duplicates)
-      .Field("reports", reports)
-      .Field("frames", frames)
-      .Field("sim_seconds", sim_seconds)
-      .Field("seconds", wall_seconds)
-      .Field("extractor_ms_per_frame", Ratio(1000.0 * r.extractor_seconds, frames))
-      .Field("extractor_boxes_per_frame", Ratio(r.extractor_boxes, frames));
-  json->Key("figure12").BeginArray();
-  for (const DetectorModeStats& d : r.detectors) WriteDetector(d, json);
-  json->EndArray();
-  json->Key("per_pass").BeginArray();
-  for (const OcrPassResult& p : r.passes) WritePass(p, r.plates, json);
-  json->EndArray();
-  json->Key("events").BeginArray();
-  for (const OcrEvalEvent& e : r.events) WriteEvent(e, json);
-  json->EndArray().EndObject();
+  Json json;
+  json["command"] = "ocr";
+  json["world"] = r.world_name;
+  json["world_file"] = info.world_file;
+  json["command_line"] = info.command_line;
+  json["seed"] = info.options.seed;
+  json["passes"] = info.options.passes;
+  json["speed_mps"] = info.options.speed_mps;
+  json["band"] = info.options.band;
+  json["known_rooms"] = info.options.known_rooms;
+  json["detector"] = ToString(info.options.extractor.detector_type);
+  json["recognizer"] = ToString(info.options.extractor.recognizer_type);
+  json["ocr_mode"] = info.options.extractor.ocr.line_mode == OcrLineMode::kSingleWord ? "word" : "line";
+  json["plates_in_world"] = static_cast<int>(r.plates.size());
+  json["plates_total"] = r.PlatesTotal();
+  json["plates_correct"] = r.PlatesCorrect();
+  json["accuracy"] = Ratio(r.PlatesCorrect(), r.PlatesTotal());
+  json["false_reads"] = false_reads;
+  json["spurious"] = spurious;
+  json["duplicates"] = duplicates;
+  json["reports"] = reports;
+  json["frames"] = frames;
+  json["sim_seconds"] = sim_seconds;
+  json["seconds"] = wall_seconds;
+  json["extractor_ms_per_frame"] = Ratio(1000.0 * r.extractor_seconds, frames);
+  json["extractor_boxes_per_frame"] = Ratio(r.extractor_boxes, frames);
+  json["figure12"] = Json::array();
+  for (const DetectorModeStats& d : r.detectors) json["figure12"].push_back(DetectorJson(d));
+  json["per_pass"] = Json::array();
+  for (const OcrPassResult& p : r.passes) json["per_pass"].push_back(PassJson(p, r.plates));
+  json["events"] = Json::array();
+  for (const OcrEvalEvent& e : r.events) json["events"].push_back(EventJson(e));
+  return json;
 }
 
 }  // namespace doorplate_localization

@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "json_writer.h"
 #include "ocr_eval.h"
+#include "result_json.h"
 
 namespace doorplate_localization {
 
@@ -15,6 +15,6 @@ struct OcrEvalRunInfo {
   OcrEvalOptions options;
 };
 
-void WriteOcrEvalJson(const OcrEvalResult& result, const OcrEvalRunInfo& info, JsonWriter* json);
+Json OcrEvalJson(const OcrEvalResult& result, const OcrEvalRunInfo& info);
 
 }  // namespace doorplate_localization

@@ -16,6 +16,17 @@ bool IsFinite(const geometry_msgs::Quaternion& q) {
   return std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z) && std::isfinite(q.w);
 }
 
+// The quaternion divided by its largest component: the same rotation, without the overflow (components
+// near 1e300) or underflow (near 1e-300) in tf2::getYaw's products that made a finite quaternion's yaw NaN
+// (a fuzzing find, issue 18: a map message with such an origin was accepted with a NaN origin yaw).
+geometry_msgs::Quaternion Rescaled(const geometry_msgs::Quaternion& q) {
+  const double m = std::max({std::fabs(q.x), std::fabs(q.y), std::fabs(q.z), std::fabs(q.w)});
+  if (!(m > 0.0)) return q;
+  geometry_msgs::Quaternion s;
+  s.x = q.x / m, s.y = q.y / m, s.z = q.z / m, s.w = q.w / m;
+  return s;
+}
+
 }  // namespace
 
 geometry_msgs::Quaternion ToYawQuaternionMsg(double yaw_rad) {
@@ -68,7 +79,7 @@ Pose2D ToPose2D(const geometry_msgs::Transform& transform) {
   if (!std::isfinite(t.x) || !std::isfinite(t.y) || !IsFinite(transform.rotation)) {
     throw std::invalid_argument("transform with a non-finite translation or rotation");
   }
-  return {t.x, t.y, tf2::getYaw(transform.rotation)};
+  return {t.x, t.y, tf2::getYaw(Rescaled(transform.rotation))};
 }
 
 Pose2D ToPose2D(const geometry_msgs::Pose& pose) {

@@ -9,6 +9,7 @@
 #include <Eigen/Dense>
 #include <tf2/LinearMath/Vector3.h>
 
+#include "doorplate_localization/common/limits.h"
 #include "doorplate_localization/ros/scan_conversions.h"
 #include "doorplate_localization/ros/text_detection_conversions.h"
 
@@ -183,6 +184,52 @@ double PoseEntropy(const std::vector<SlamParticle>& particles) {
   }
   cov += 1e-12 * Eigen::Matrix3d::Identity();  // keeps a single pose finite
   return 0.5 * std::log(std::pow(2.0 * M_PI * M_E, 3) * cov.determinant());
+}
+
+std::string MapperStateText(const MapperHealth& h) {
+  if (!h.error.empty()) return "error: " + limits::TruncateForLog(h.error, 200);
+  if (h.scan_age_s < 0.0 || (h.scan_timeout_s > 0.0 && h.scan_age_s > h.scan_timeout_s)) return "waiting_for_scan";
+  return "mapping";
+}
+
+diagnostic_msgs::DiagnosticStatus ToMapperDiagnosticStatus(const MapperHealth& h, const std::string& name,
+                                                           const std::string& hardware_id) {
+  diagnostic_msgs::DiagnosticStatus d;
+  d.name = name;
+  d.hardware_id = hardware_id;
+  const std::string state = MapperStateText(h);
+  d.level = state == "mapping"                 ? diagnostic_msgs::DiagnosticStatus::OK
+            : state.rfind("error", 0) == 0     ? diagnostic_msgs::DiagnosticStatus::ERROR
+                                               : diagnostic_msgs::DiagnosticStatus::WARN;
+  d.message = state;
+  if (!h.last_drop.empty()) d.message += "; last scan dropped: " + limits::TruncateForLog(h.last_drop, 200);
+  const auto add = [&d](const std::string& key, const std::string& value) {
+    diagnostic_msgs::KeyValue kv;
+    kv.key = key;
+    kv.value = value;
+    d.values.push_back(kv);
+  };
+  const auto number = [](double v, int precision) {
+    std::ostringstream out;
+    out.setf(std::ios::fixed);
+    out.precision(precision);
+    out << v;
+    return out.str();
+  };
+  add("state", state);
+  add("scan rate (Hz)", number(h.scan_rate_hz, 1));
+  add("last scan age (s)", h.scan_age_s < 0.0 ? "none yet" : number(h.scan_age_s, 2));
+  add("scans processed", std::to_string(h.scans_processed));
+  add("scans dropped", std::to_string(h.scans_dropped));
+  add("last scan dropped", h.last_drop.empty() ? "none" : limits::TruncateForLog(h.last_drop, 200));
+  add("particles", std::to_string(h.particles));
+  add("effective particles", number(h.neff, 1));
+  add("landmarks", std::to_string(h.landmarks));
+  add("plates used", std::to_string(h.plates_used));
+  add("plates ignored", std::to_string(h.plates_ignored));
+  add("map", h.map.empty() ? "none yet" : h.map);
+  add("last error", h.error.empty() ? "none" : limits::TruncateForLog(h.error, 200));
+  return d;
 }
 
 }  // namespace doorplate_localization

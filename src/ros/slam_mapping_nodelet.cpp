@@ -11,6 +11,10 @@
 // processed scan, text_landmarks (visualization_msgs/MarkerArray, latched) when the landmarks change, and
 // tf map -> odom (the session's) every transform_publish_period (future-dated by one period, like
 // gmapping's tf_delay).
+// /diagnostics (diagnostic_msgs/DiagnosticArray, 1 Hz ROS time): "mapping" while the session takes scans,
+// "waiting_for_scan" before the first and after 2 s without one, "error: <what>" after an unexpected
+// exception until it takes a scan again; scans dropped and why, particles, landmarks, plates, the map
+// (slam_conversions.h's ToMapperDiagnosticStatus).
 // Services: dynamic_map (nav_msgs/GetMap, the last published map) and ~save_maps (std_srvs/Trigger:
 // <map_output_dir>/<map_name>.pgm + .yaml (map_server) and .text_map.yaml, atomically); the maps are also
 // saved when the nodelet shuts down. Parameters: slam_mapping_options.h, docs/parameters.md.
@@ -18,13 +22,17 @@
 // throttled warning naming the topic; the nodelet keeps running.
 // Threading: callbacks run on the nodelet's single-threaded queue (tf filter included); mutex_ also
 // guards against the destructor's final save.
+#include <algorithm>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <sstream>
 #include <string>
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <message_filters/subscriber.h>
 #include <nav_msgs/GetMap.h>
@@ -92,6 +100,8 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     entropy_pub_ = pnh.advertise<std_msgs::Float64>("entropy", 1, /*latch=*/true);
     map_srv_ = nh.advertiseService("dynamic_map", &SlamMappingNodelet::OnGetMap, this);
     save_srv_ = pnh.advertiseService("save_maps", &SlamMappingNodelet::OnSaveMaps, this);
+    diagnostics_pub_ = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 1);
+    health_timer_ = nh.createTimer(ros::Duration(1.0), &SlamMappingNodelet::OnHealthTimer, this);
 
     scan_topic_ = nh.resolveName("scan");
     // Queues of kScanQueueSize: a back-end solve holds this nodelet for ~1 s (more on a loaded machine, 5x
@@ -103,8 +113,9 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     scan_filter_->registerCallback(&SlamMappingNodelet::OnScan, this);
     scan_filter_->registerFailureCallback(
         [this](const sensor_msgs::LaserScan::ConstPtr& scan, tf2_ros::filter_failure_reasons::FilterFailureReason) {
-          NODELET_WARN_THROTTLE(5.0, "%s: no tf %s -> %s at the scan's stamp %.3f; dropping it", scan_topic_.c_str(),
-                                options_.odom_frame.c_str(), scan->header.frame_id.c_str(), scan->header.stamp.toSec());
+          std::lock_guard<std::mutex> lock(mutex_);
+          DropScan("no tf " + options_.odom_frame + " -> " + scan->header.frame_id + " at the scan's stamp " +
+                   std::to_string(scan->header.stamp.toSec()));
         });
     if (options_.use_text) {
       detections_topic_ = nh.resolveName("text_detections");
@@ -132,6 +143,13 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     }
   }
 
+  // A scan not taken: a throttled warning naming the topic, counted for /diagnostics. Call with mutex_ held.
+  void DropScan(const std::string& why) {
+    ++scans_dropped_;
+    last_drop_ = scan_topic_ + ": " + why;
+    NODELET_WARN_THROTTLE(5.0, "%s; dropping it", last_drop_.c_str());
+  }
+
   // validate -> convert -> session -> publish. Throttling and stamp order are the session's.
   void OnScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -139,21 +157,22 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     RangeScan scan;
     Pose2D odom_pose;
     const std::string problem = PrepareSlamScan(*msg, lookup_, frames_, &scan, &odom_pose);
-    if (!problem.empty()) {
-      NODELET_WARN_THROTTLE(5.0, "%s: %s; dropping it", scan_topic_.c_str(), problem.c_str());
-      return;
-    }
+    if (!problem.empty()) return DropScan(problem);
     MappingUpdate update;
     try {
       update = session_->AddScan(stamp.toSec(), odom_pose, scan);
     } catch (const std::invalid_argument& e) {
-      NODELET_WARN_THROTTLE(5.0, "%s: %s; dropping it", scan_topic_.c_str(), e.what());
+      return DropScan(e.what());
+    } catch (const std::exception& e) {  // not bad input: the session failed; said on /diagnostics until a scan is taken
+      error_ = std::string("scan at ") + std::to_string(stamp.toSec()) + " s: " + e.what();
+      NODELET_ERROR_THROTTLE(5.0, "slam mapping: %s", error_.c_str());
       return;
     }
-    if (!update.scan_refused_reason.empty()) {
-      NODELET_WARN_THROTTLE(5.0, "%s: %s; dropping it", scan_topic_.c_str(), update.scan_refused_reason.c_str());
-      return;
-    }
+    if (!update.scan_refused_reason.empty()) return DropScan(update.scan_refused_reason);
+    last_scan_taken_ = ros::Time::now();
+    ++scans_since_health_;
+    error_.clear();
+    last_drop_.clear();
     if (!update.scan_processed) return;
     std_msgs::Float64 entropy;
     entropy.data = PoseEntropy(session_->slam().slam().particles());
@@ -181,6 +200,7 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     for (const PlateSighting& sighting : sightings) {  // one by one: a malformed one does not drop the others
       try {
         for (const MappingPlateOutcome& o : session_->AddPlates(stamp.toSec(), odom_pose, {sighting}).plates) {
+          ++(o.result.used() ? plates_used_ : plates_ignored_);
           if (o.result.used()) {
             changed = true;
             NODELET_INFO("slam mapping: plate '%s' %s (landmark %d, range %.2f m)", o.sighting.text.c_str(),
@@ -197,6 +217,38 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     }
     // The landmarks as they stand (the last solve's positions, the best particle's for plates read since).
     if (changed) markers_pub_.publish(ToTextLandmarkMarkers(MapFrame(session_->slam().BuildTextMap()), options_.map_frame, stamp));
+  }
+
+  // 1 Hz: /diagnostics.
+  void OnHealthTimer(const ros::TimerEvent&) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const ros::Time now = ros::Time::now();
+    MapperHealth h;
+    h.scan_age_s = last_scan_taken_.isZero() ? -1.0 : std::max(0.0, (now - last_scan_taken_).toSec());
+    const double elapsed_s = last_health_time_.isZero() ? 0.0 : (now - last_health_time_).toSec();
+    h.scan_rate_hz = elapsed_s > 0.0 ? scans_since_health_ / elapsed_s : 0.0;
+    scans_since_health_ = 0;
+    last_health_time_ = now;
+    h.scans_dropped = scans_dropped_;
+    h.last_drop = last_drop_;
+    const RbpfSlam& filter = session_->slam().slam();
+    h.scans_processed = filter.stats().scans_processed;
+    h.particles = static_cast<int>(filter.particles().size());
+    h.neff = filter.stats().last_neff;
+    h.landmarks = session_->slam().num_landmarks();
+    h.plates_used = plates_used_;
+    h.plates_ignored = plates_ignored_;
+    if (latest_map_) {
+      std::ostringstream map;
+      map << latest_map_->info.width << " x " << latest_map_->info.height << " at " << latest_map_->info.resolution
+          << " m";
+      h.map = map.str();
+    }
+    h.error = error_;
+    diagnostic_msgs::DiagnosticArray array;
+    array.header.stamp = now;
+    array.status.push_back(ToMapperDiagnosticStatus(h, getName() + ": mapping", getName()));
+    diagnostics_pub_.publish(array);
   }
 
   void OnTfTimer(const ros::TimerEvent&) {
@@ -276,9 +328,14 @@ class SlamMappingNodelet : public nodelet::Nodelet {
   message_filters::Subscriber<sensor_msgs::LaserScan> scan_sub_;
   std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::LaserScan>> scan_filter_;
   ros::Subscriber detections_sub_;
-  ros::Publisher map_pub_, metadata_pub_, markers_pub_, entropy_pub_;
+  ros::Publisher map_pub_, metadata_pub_, markers_pub_, entropy_pub_, diagnostics_pub_;
   ros::ServiceServer map_srv_, save_srv_;
-  ros::Timer tf_timer_;
+  ros::Timer tf_timer_, health_timer_;
+  // For /diagnostics.
+  ros::Time last_scan_taken_, last_health_time_;
+  int scans_since_health_ = 0;
+  long long scans_dropped_ = 0, plates_used_ = 0, plates_ignored_ = 0;
+  std::string last_drop_, error_;
   std::string scan_topic_, detections_topic_;
   ros::Time last_tf_stamp_;
   std::optional<nav_msgs::OccupancyGrid> latest_map_;

@@ -8,6 +8,8 @@
 #include <limits>
 #include <sstream>
 
+#include "doorplate_localization/common/limits.h"
+
 namespace doorplate_localization {
 namespace {
 
@@ -61,12 +63,23 @@ CarmenScan ParseFlaser(const std::vector<std::string>& t, const std::string& whe
   scan.min_range_m = options.min_range_m;
   scan.ranges_m.resize(n);
   for (int i = 0; i < n; ++i) {
-    scan.ranges_m[i] =
-        static_cast<float>(ParseDouble(t[2 + i], where, "range " + std::to_string(i)));
+    const double range = ParseDouble(t[2 + i], where, "range " + std::to_string(i));
+    // A range a float cannot hold (1e308) is no laser's: converting it would be undefined behaviour.
+    if (std::fabs(range) > std::numeric_limits<float>::max()) {
+      throw CarmenLogError(where + "range " + std::to_string(i) + ": " + t[2 + i] + " does not fit a float range");
+    }
+    scan.ranges_m[i] = static_cast<float>(range);
   }
+  // Positions beyond limits::kMaxCoordinateM (a pose shifted by 1e15 m) would make the SLAM's grids
+  // absurdly large: refused here, naming the line and the field.
+  const auto coordinate = [&](int index, const std::string& field) {
+    const double value = ParseDouble(t[index], where, field);
+    const std::string problem = limits::CheckCoordinate(value);
+    if (!problem.empty()) throw CarmenLogError(where + field + ": " + problem);
+    return value;
+  };
   const auto pose = [&](int first, const char* name) {
-    return Pose2D{ParseDouble(t[first], where, std::string(name) + " x"),
-                  ParseDouble(t[first + 1], where, std::string(name) + " y"),
+    return Pose2D{coordinate(first, std::string(name) + " x"), coordinate(first + 1, std::string(name) + " y"),
                   ParseDouble(t[first + 2], where, std::string(name) + " theta")};
   };
   out.laser_pose = pose(2 + n, "laser pose");

@@ -7,12 +7,17 @@
 #include <string>
 #include <unordered_set>
 
+#include "doorplate_localization/common/limits.h"
+
 namespace doorplate_localization {
 namespace {
 
 const RbpfSlamOptions& Validated(const RbpfSlamOptions& o) {
   const auto fail = [](const std::string& what) { throw std::invalid_argument("RbpfSlamOptions." + what); };
-  if (o.num_particles < 1) fail("num_particles: must be >= 1, got " + std::to_string(o.num_particles));
+  if (o.num_particles < 1 || o.num_particles > limits::kMaxParticles) {  // 1e9 was std::bad_alloc (issue 18)
+    fail("num_particles: must be in [1, " + std::to_string(limits::kMaxParticles) + "] (limits::kMaxParticles), got " +
+         std::to_string(o.num_particles));
+  }
   if (!(o.linear_update_m >= 0) || !(o.angular_update_rad >= 0)) fail("linear/angular_update: must be >= 0");
   if (!(o.resample_neff_ratio >= 0 && o.resample_neff_ratio <= 1)) fail("resample_neff_ratio: must be in [0, 1]");
   if (!(o.likelihood_gain > 0)) fail("likelihood_gain: must be > 0");

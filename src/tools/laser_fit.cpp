@@ -15,7 +15,7 @@
 
 #include <zlib.h>
 
-#include "cli_args.h"
+#include "cli_app.h"
 #include "laser_fit_report.h"
 #include "map_tool_output.h"
 #include "output_guard.h"
@@ -27,16 +27,14 @@
 
 namespace dl = doorplate_localization;
 namespace tools = doorplate_localization::tools;
-using tools::UsageError;
 
 namespace {
 
-const char kUsage[] =
-    "usage: doorplate_laser_fit --log FILE [--log FILE]... [--seed N] [--json OUT.json] [--plot OUT.png]\n"
-    "         [--max-range-m M] [--resolution-m R] [--depth-edge-m D]\n"
-    "  FILE: a CARMEN log with corrected poses (.log or .log.gz). Even-indexed scans draw the reference\n"
-    "  grid, odd-indexed scans are judged against it. --seed: the simulated scans' random draws (default 1).\n"
-    "  --max-range-m: expected ranges are cast this far (default 40).\n";
+const char kDescription[] =
+    "Fits the simulator's laser error model to CARMEN logs with corrected poses and compares it with the gaussian one.";
+const char kNotes[] =
+    "FILE: a CARMEN log with corrected poses (.log or .log.gz). Even-indexed scans draw the reference\n"
+    "grid, odd-indexed scans are judged against it.";
 
 struct Args {
   std::vector<std::string> logs;
@@ -46,36 +44,28 @@ struct Args {
   dl::BeamTallyOptions bins;
 };
 
-Args ParseArgs(int argc, char** argv) {
-  Args args;
-  tools::ForEachOptionValue(argc, argv, kUsage, [&](const std::string& option, const std::string& value) {
-    if (option == "--log") {
-      args.logs.push_back(value);
-    } else if (option == "--seed") {
-      args.seed = static_cast<std::uint64_t>(tools::ParseWholeNumber(option, value, 0));
-    } else if (option == "--json") {
-      args.json = value;
-    } else if (option == "--plot") {
-      args.plot = value;
-    } else if (option == "--max-range-m") {
-      args.map.max_range_m = tools::ParsePositiveNumber(option, value);
-    } else if (option == "--resolution-m") {
-      args.map.resolution_m = tools::ParsePositiveNumber(option, value);
-    } else if (option == "--depth-edge-m") {
-      args.bins.depth_edge_m = tools::ParsePositiveNumber(option, value);
-    } else {
-      throw UsageError("unknown option '" + option + "'");
-    }
-  });
-  if (args.logs.empty()) throw UsageError("--log is required");
-  if (args.bins.range_bins_m.back() > args.map.max_range_m) {
-    while (args.bins.range_bins_m.size() > 2 && args.bins.range_bins_m[args.bins.range_bins_m.size() - 2] >=
-                                                    args.map.max_range_m) {
-      args.bins.range_bins_m.pop_back();
-    }
-    args.bins.range_bins_m.back() = args.map.max_range_m;
-  }
-  return args;
+// The last range bin ends at --max-range-m (bins beyond it dropped).
+void FitRangeBins(Args* a) {
+  std::vector<double>& bins = a->bins.range_bins_m;
+  if (bins.back() <= a->map.max_range_m) return;
+  while (bins.size() > 2 && bins[bins.size() - 2] >= a->map.max_range_m) bins.pop_back();
+  bins.back() = a->map.max_range_m;
+}
+
+void AddOptions(CLI::App* app, Args* args) {
+  app->footer(kNotes);
+  app->add_option("--log", args->logs, "a CARMEN log FILE (repeatable)")->required()->allow_extra_args(false);
+  app->add_option("--seed", args->seed, "the simulated scans' random draws")->capture_default_str()
+      ->transform(tools::Seed());
+  app->add_option("--json", args->json, "write the report as JSON here");
+  app->add_option("--plot", args->plot, "draw the distributions into this PNG");
+  app->add_option("--max-range-m", args->map.max_range_m, "expected ranges are cast this far")->capture_default_str()
+      ->check(tools::PositiveNumber());
+  app->add_option("--resolution-m", args->map.resolution_m, "reference grid cell size")->capture_default_str()
+      ->check(tools::PositiveNumber());
+  app->add_option("--depth-edge-m", args->bins.depth_edge_m, "depth step that makes a beam an edge beam")
+      ->capture_default_str()->check(tools::PositiveNumber());
+  app->callback([args] { FitRangeBins(args); });
 }
 
 // A log, unpacked through zlib (which also reads plain text).
@@ -193,4 +183,6 @@ int Run(const Args& args) {
 
 }  // namespace
 
-int main(int argc, char** argv) { return tools::RunTool("doorplate_laser_fit", kUsage, ParseArgs, Run, argc, argv); }
+int main(int argc, char** argv) {
+  return tools::RunTool("doorplate_laser_fit", kDescription, AddOptions, Run, argc, argv);
+}

@@ -16,15 +16,18 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "cli_args.h"
+#include "cli_app.h"
 #include "map_tool_output.h"
 #include "output_guard.h"
+#include "doorplate_localization/common/limits.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/slam/carmen_reader.h"
 #include "doorplate_localization/slam/mapping_session.h"
@@ -34,69 +37,55 @@ namespace dl = doorplate_localization;
 
 namespace {
 
-const char kUsage[] =
-    "usage: doorplate_map_log --log FILE.log --out DIR [--method slam|rbpf] [--seed S] [--particles N]\n"
-    "         [--progress-s SECONDS] [--set NAME=VALUE]... [--dump-particles]\n"
-    "  FILE.log: a CARMEN log (unpacked). --method slam (default): the mapping nodelet's SLAM (filter with\n"
-    "  TextSlamOptions' defaults and the pose-graph back end); rbpf: the laser-only filter alone\n"
-    "  (RbpfSlamOptions' defaults, no back end; docs/results/real-logs.md). --set changes any option of the\n"
-    "  one option table (TextSlamOptionNames), after --method, e.g. --set linear_update_m=0.5\n"
-    "  --set matcher.field_sigma_m=0.05 (docs/slam.md). --dump-particles also writes every particle's\n"
-    "  trajectory (trajectory_particleI.txt).\n";
+const char kDescription[] = "Maps a CARMEN log offline through the mapping nodelet's session.";
+const char kNotes[] =
+    "FILE.log: a CARMEN log (unpacked). --method slam (default): the mapping nodelet's SLAM (filter with\n"
+    "TextSlamOptions' defaults and the pose-graph back end); rbpf: the laser-only filter alone\n"
+    "(RbpfSlamOptions' defaults, no back end; docs/results/real-logs.md). --set changes any option of the\n"
+    "one option table (TextSlamOptionNames), after --method, e.g. --set linear_update_m=0.5\n"
+    "--set matcher.field_sigma_m=0.05 (docs/slam.md).";
 
 namespace tools = doorplate_localization::tools;
 using tools::UsageError;
 
 struct Args {
-  std::string log, out;
+  std::string log, out, method = "slam";
+  std::optional<std::uint64_t> seed;
+  std::optional<int> particles;
+  std::vector<std::string> sets;
   bool dump_particles = false;
   double progress_s = 5.0;
   bool laser_only = false;  // --method rbpf
   dl::MappingSessionOptions options;
 };
 
-Args ParseArgs(int argc, char** argv) {
-  Args args;
+void AddOptions(CLI::App* app, Args* args) {
+  app->footer(kNotes);
+  app->add_option("--log", args->log, "the CARMEN log FILE.log")->required();
+  app->add_option("--out", args->out, "output folder DIR")->required();
+  app->add_option("--method", args->method, "slam or rbpf")->capture_default_str()
+      ->check(CLI::IsMember({"slam", "rbpf"}));
+  app->add_option("--seed", args->seed, "filter seed [the option table's]")->transform(tools::Seed());
+  app->add_option("--particles", args->particles, "number of particles [the method's]")
+      ->transform(tools::WholeNumber(1, dl::limits::kMaxParticles));
+  app->add_option("--progress-s", args->progress_s, "a progress line on stderr every this many seconds")
+      ->capture_default_str()->check(tools::Number());
+  app->add_option("--set", args->sets, "NAME=VALUE: a SLAM option (repeatable)")->allow_extra_args(false);
+  app->add_flag("--dump-particles", args->dump_particles, "also write every particle's trajectory "
+                "(trajectory_particleI.txt)");
   // --method first: it picks the defaults the other options change.
-  for (int i = 1; i + 1 < argc; ++i) {
-    if (std::string(argv[i]) != "--method") continue;
-    const std::string method = argv[i + 1];
-    if (method == "rbpf") args.laser_only = true;
-    else if (method != "slam") throw UsageError("--method must be slam or rbpf, got '" + method + "'");
-  }
-  if (args.laser_only) {
-    args.options.slam.slam = dl::RbpfSlamOptions{};
-    args.options.slam.back_end.enabled = false;
-  }
-  for (int i = 1; i < argc; ++i) {
-    const std::string option = argv[i];
-    tools::ExitIfHelp(option, kUsage);
-    if (option == "--dump-particles") {
-      args.dump_particles = true;
-      continue;
+  app->callback([args] {
+    args->laser_only = args->method == "rbpf";
+    if (args->laser_only) {
+      args->options.slam.slam = dl::RbpfSlamOptions{};
+      args->options.slam.back_end.enabled = false;
     }
-    const std::string value = tools::TakeValue(argc, argv, &i);
-    if (option == "--method") {
-      continue;  // read above
-    } else if (option == "--log") {
-      args.log = value;
-    } else if (option == "--out") {
-      args.out = value;
-    } else if (option == "--progress-s") {
-      args.progress_s = tools::ParseNumber(option, value);
-    } else if (option == "--seed") {
-      args.options.slam.slam.seed = static_cast<std::uint64_t>(tools::ParseWholeNumber(option, value, 0));
-    } else if (option == "--particles") {
-      args.options.slam.slam.num_particles = static_cast<int>(tools::ParseWholeNumber(option, value, 1));
-    } else if (option == "--set") {
-      tools::ApplySetOption(value,
-                            [&](const std::string& name, double v) { SetTextSlamOption(name, v, &args.options.slam); });
-    } else {
-      throw UsageError("unknown option '" + option + "'");
+    if (args->seed) args->options.slam.slam.seed = *args->seed;
+    if (args->particles) args->options.slam.slam.num_particles = *args->particles;
+    for (const std::string& set : args->sets) {
+      tools::ApplySetOption(set, [&](const std::string& name, double v) { SetTextSlamOption(name, v, &args->options.slam); });
     }
-  }
-  if (args.log.empty() || args.out.empty()) throw UsageError("--log and --out are required");
-  return args;
+  });
 }
 
 // The map in grey (unknown mid-grey, free white, occupied black), north up, trajectory in red; at most
@@ -195,4 +184,6 @@ int Run(const Args& args) {
 
 }  // namespace
 
-int main(int argc, char** argv) { return tools::RunTool("doorplate_map_log", kUsage, ParseArgs, Run, argc, argv); }
+int main(int argc, char** argv) {
+  return tools::RunTool("doorplate_map_log", kDescription, AddOptions, Run, argc, argv);
+}

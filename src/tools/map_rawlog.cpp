@@ -15,6 +15,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
@@ -22,9 +23,10 @@
 #include <mrpt/obs/CRawlog.h>
 #include <mrpt/obs/CSensoryFrame.h>
 
-#include "cli_args.h"
+#include "cli_app.h"
 #include "map_tool_output.h"
 #include "output_guard.h"
+#include "rawlog_reader.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/slam/mapping_session.h"
 #include "doorplate_localization/slam/rbpf_slam_options.h"
@@ -35,54 +37,43 @@ using tools::UsageError;
 
 namespace {
 
-const char kUsage[] =
-    "usage: doorplate_map_rawlog RAWLOG --out-dir DIR [--seed S] [--set NAME=VALUE]... [--sensor-label L]\n"
-    "         [--expect \"X Y YAW_DEG\"] [--max-error E]\n"
-    "  e.g. /usr/share/mrpt/datasets/'2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog' (mrpt-common)\n"
-    "  --expect \"3.4548 -18.0399 -86.48\" (MRPT's regression value for it). --set: the SLAM option table.\n";
+const char kDescription[] = "Maps an MRPT rawlog offline through the mapping nodelet's session.";
+const char kNotes[] =
+    "e.g. /usr/share/mrpt/datasets/'2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog' (mrpt-common)\n"
+    "--expect \"3.4548 -18.0399 -86.48\" (MRPT's regression value for it): exit status 3 when the final pose\n"
+    "is not within --max-error of it.";
 
 struct Args {
-  std::string rawlog, out_dir, sensor_label;
+  std::string rawlog, out_dir, sensor_label, expect;
+  std::vector<std::string> sets;
   bool has_expected = false;
   dl::Pose2D expected;
   double max_error = 1.0;
   dl::MappingSessionOptions options;
 };
 
-Args ParseArgs(int argc, char** argv) {
-  Args args;
-  for (int i = 1; i < argc; ++i) {
-    const std::string option = argv[i];
-    tools::ExitIfHelp(option, kUsage);
-    if (option.rfind("--", 0) != 0) {
-      if (!args.rawlog.empty()) throw UsageError("more than one rawlog");
-      args.rawlog = option;
-      continue;
+void AddOptions(CLI::App* app, Args* args) {
+  app->footer(kNotes);
+  app->add_option("RAWLOG", args->rawlog, "the MRPT rawlog")->required();
+  app->add_option("--out-dir", args->out_dir, "output folder DIR")->required();
+  app->add_option("--seed", args->options.slam.slam.seed, "filter seed")->capture_default_str()->transform(tools::Seed());
+  app->add_option("--set", args->sets, "NAME=VALUE: a SLAM option of the one option table (repeatable)")
+      ->allow_extra_args(false);
+  app->add_option("--sensor-label", args->sensor_label, "use only the scans of this sensor label");
+  app->add_option("--expect", args->expect, "\"X Y YAW_DEG\": the final pose expected");
+  app->add_option("--max-error", args->max_error, "|log| of the difference to --expect below which it passes")
+      ->capture_default_str()->check(tools::Number());
+  app->callback([args] {
+    for (const std::string& set : args->sets) {
+      tools::ApplySetOption(set, [&](const std::string& name, double v) { dl::SetTextSlamOption(name, v, &args->options.slam); });
     }
-    const std::string value = tools::TakeValue(argc, argv, &i);
-    if (option == "--out-dir") {
-      args.out_dir = value;
-    } else if (option == "--sensor-label") {
-      args.sensor_label = value;
-    } else if (option == "--max-error") {
-      args.max_error = tools::ParseNumber(option, value);
-    } else if (option == "--seed") {
-      args.options.slam.slam.seed = static_cast<std::uint64_t>(tools::ParseWholeNumber(option, value, 0));
-    } else if (option == "--expect") {
-      std::istringstream in(value);
-      double yaw_deg = 0;
-      if (!(in >> args.expected.x_m >> args.expected.y_m >> yaw_deg)) throw UsageError("--expect: want \"X Y YAW_DEG\"");
-      args.expected.theta_rad = yaw_deg * M_PI / 180.0;
-      args.has_expected = true;
-    } else if (option == "--set") {
-      tools::ApplySetOption(value,
-                            [&](const std::string& name, double v) { dl::SetTextSlamOption(name, v, &args.options.slam); });
-    } else {
-      throw UsageError("unknown option '" + option + "'");
-    }
-  }
-  if (args.rawlog.empty() || args.out_dir.empty()) throw UsageError("a RAWLOG and --out-dir are required");
-  return args;
+    if (args->expect.empty()) return;
+    std::istringstream in(args->expect);
+    double yaw_deg = 0;
+    if (!(in >> args->expected.x_m >> args->expected.y_m >> yaw_deg)) throw UsageError("--expect: want \"X Y YAW_DEG\"");
+    args->expected.theta_rad = yaw_deg * M_PI / 180.0;
+    args->has_expected = true;
+  });
 }
 
 // An MRPT scan as the core's RangeScan: MRPT's beam angles (getScanAngle), invalid beams at the device's
@@ -125,9 +116,7 @@ int Run(const Args& args) {
                                   {"--out-dir", args.out_dir + "/trajectory.txt"}});
   std::filesystem::create_directories(args.out_dir);
   mrpt::obs::CRawlog rawlog;
-  if (!rawlog.loadFromRawLogFile(args.rawlog) || rawlog.size() == 0) {
-    throw std::runtime_error(args.rawlog + ": cannot read it as an MRPT rawlog (or it is empty)");
-  }
+  tools::LoadRawlog(args.rawlog, &rawlog);  // RawlogError naming the file, without MRPT's call stack
   dl::MappingSession session(args.options);
   const dl::RbpfSlam& filter = session.slam().slam();
   dl::Pose2D odometry;
@@ -194,5 +183,5 @@ int Run(const Args& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return tools::RunTool("doorplate_map_rawlog", kUsage, ParseArgs, Run, argc, argv);
+  return tools::RunTool("doorplate_map_rawlog", kDescription, AddOptions, Run, argc, argv);
 }

@@ -21,24 +21,21 @@
 #include <mrpt/obs/CRawlog.h>
 #include <mrpt/obs/CSensoryFrame.h>
 
-#include "cli_args.h"
+#include "cli_app.h"
 #include "output_guard.h"
+#include "rawlog_reader.h"
 #include "doorplate_localization/odometry_fit/odometry_slip_fit.h"
 #include "doorplate_localization/slam/scan_icp.h"
 
 namespace dl = doorplate_localization;
 namespace tools = dl::tools;
-using tools::UsageError;
 
 namespace {
 
-const char kUsage[] =
-    "usage: doorplate_odometry_fit --rawlog FILE --json OUT [--seed N] [--segment-length-m D]\n"
-    "         [--max-along-sigma-m S] [--zones Z] [--sensor-label L] [--sync-odometry 0|1]\n"
-    "  e.g. --rawlog /usr/share/mrpt/datasets/'2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog'\n"
-    "  --segment-length-m: reference travel per segment (1.0); --max-along-sigma-m: an ICP step whose\n"
-    "  standard deviation along the travel exceeds this (0.02) is not a reference; --seed: bootstrap (1);\n"
-    "  --sync-odometry 1 (default): odometry interpolated to each scan's time stamp.\n";
+const char kDescription[] =
+    "How real wheel odometry slips: fits the simulator's slip model to an MRPT rawlog against laser odometry (ICP).";
+const char kNotes[] =
+    "e.g. --rawlog /usr/share/mrpt/datasets/'2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog'";
 
 struct Args {
   std::string rawlog, json, sensor_label;
@@ -49,21 +46,20 @@ struct Args {
   dl::OdometrySlipFitOptions fit;
 };
 
-Args ParseArgs(int argc, char** argv) {
-  Args args;
-  tools::ForEachOptionValue(argc, argv, kUsage, [&](const std::string& option, const std::string& value) {
-    if (option == "--rawlog") args.rawlog = value;
-    else if (option == "--json") args.json = value;
-    else if (option == "--sensor-label") args.sensor_label = value;
-    else if (option == "--seed") args.seed = static_cast<std::uint64_t>(tools::ParseWholeNumber(option, value, 0));
-    else if (option == "--segment-length-m") args.segments.segment_length_m = tools::ParsePositiveNumber(option, value);
-    else if (option == "--max-along-sigma-m") args.max_along_sigma_m = tools::ParsePositiveNumber(option, value);
-    else if (option == "--sync-odometry") args.sync_odometry = tools::ParseWholeNumber(option, value, 0, 1) == 1;
-    else if (option == "--zones") args.fit.num_zones = static_cast<int>(tools::ParseWholeNumber(option, value, 1));
-    else throw UsageError("unknown option '" + option + "'");
-  });
-  if (args.rawlog.empty() || args.json.empty()) throw UsageError("--rawlog and --json are required");
-  return args;
+void AddOptions(CLI::App* app, Args* args) {
+  app->footer(kNotes);
+  app->add_option("--rawlog", args->rawlog, "the MRPT rawlog")->required();
+  app->add_option("--json", args->json, "write the segments and the fit here")->required();
+  app->add_option("--seed", args->seed, "the bootstrap intervals' draws")->capture_default_str()->transform(tools::Seed());
+  app->add_option("--segment-length-m", args->segments.segment_length_m, "reference travel per segment")
+      ->capture_default_str()->check(tools::PositiveNumber());
+  app->add_option("--max-along-sigma-m", args->max_along_sigma_m, "an ICP step whose standard deviation along the "
+                  "travel exceeds this is not a reference")->capture_default_str()->check(tools::PositiveNumber());
+  app->add_option("--zones", args->fit.num_zones, "slip zones to fit")->capture_default_str()
+      ->transform(tools::WholeNumber(1));
+  app->add_option("--sensor-label", args->sensor_label, "use only the scans of this sensor label");
+  app->add_option("--sync-odometry", args->sync_odometry, "1: odometry interpolated to each scan's time stamp")
+      ->default_str("1")->transform(tools::WholeNumber(0, 1));
 }
 
 // One laser scan: the latest odometry pose (odom frame) and its time, the scan's time, echoes in base_link.
@@ -87,9 +83,7 @@ std::vector<dl::Vec2> Points(const mrpt::obs::CObservation2DRangeScan& obs) {
 
 std::vector<Scan> ReadScans(const Args& args) {
   mrpt::obs::CRawlog rawlog;
-  if (!rawlog.loadFromRawLogFile(args.rawlog) || rawlog.size() == 0) {
-    throw std::runtime_error(args.rawlog + ": cannot read it as an MRPT rawlog (or it is empty)");
-  }
+  tools::LoadRawlog(args.rawlog, &rawlog);  // RawlogError naming the file, without MRPT's call stack
   std::vector<Scan> scans;
   dl::Pose2D odometry;
   double odometry_time_s = 0.0;
@@ -279,5 +273,5 @@ int Run(const Args& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return tools::RunTool("doorplate_odometry_fit", kUsage, &ParseArgs, &Run, argc, argv);
+  return tools::RunTool("doorplate_odometry_fit", kDescription, AddOptions, Run, argc, argv);
 }

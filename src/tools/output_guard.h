@@ -9,7 +9,7 @@
 #include <system_error>
 #include <vector>
 
-#include "cli_args.h"
+#include "usage_error.h"
 #include "doorplate_localization/common/geometry2d.h"
 #include "doorplate_localization/maps/occupancy_grid.h"
 

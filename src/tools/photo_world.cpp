@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include "cli_args.h"
+#include "cli_app.h"
 #include "output_guard.h"
 #include "map_tool_output.h"
 #include "doorplate_localization/sim/ground_truth_maps.h"
@@ -21,13 +21,12 @@ namespace dl = doorplate_localization;
 
 namespace {
 
-const char kUsage[] =
-    "usage: doorplate_photo_world --crops CROPS.tsv --out DIR [--name photo_plates] [--plate-width 0.25]\n"
-    "         [--max-plate-height 0.25] [--door-spacing 5.4] [--corridor-width 1.85] [--plate-height 1.65]\n"
-    "  CROPS.tsv lines: image_path<TAB>x<TAB>y<TAB>w<TAB>h<TAB>text (box in the photo's pixels, text = the\n"
-    "  room number); '#' lines are skipped, relative image paths are from the TSV's folder.\n"
-    "  Writes DIR/worlds/NAME.yaml, DIR/worlds/faces/plate_NN.png and DIR/maps/NAME.{pgm,yaml,text_map.yaml}.\n"
-    "  Then: doorplate_eval ocr --world DIR/worlds/NAME.yaml; doorplate_eval localize --world DIR/worlds/NAME.yaml\n";
+const char kDescription[] = "Builds a bench world whose doorplates are real plate photographs.";
+const char kNotes[] =
+    "CROPS.tsv lines: image_path<TAB>x<TAB>y<TAB>w<TAB>h<TAB>text (box in the photo's pixels, text = the\n"
+    "room number); '#' lines are skipped, relative image paths are from the TSV's folder.\n"
+    "Writes DIR/worlds/NAME.yaml, DIR/worlds/faces/plate_NN.png and DIR/maps/NAME.{pgm,yaml,text_map.yaml}.\n"
+    "Then: doorplate_eval ocr --world DIR/worlds/NAME.yaml; doorplate_eval localize --world DIR/worlds/NAME.yaml";
 
 struct Args {
   std::string crops, out;
@@ -35,24 +34,20 @@ struct Args {
 };
 
 namespace tools = doorplate_localization::tools;
-using tools::UsageError;
 
-Args ParseArgs(int argc, char** argv) {
-  Args args;
-  tools::ForEachOptionValue(argc, argv, kUsage, [&](const std::string& option, const std::string& value) {
-    if (option == "--crops") args.crops = value;
-    else if (option == "--out") args.out = value;
-    else if (option == "--name") args.world.name = value;
-    else if (option == "--plate-width") args.world.plate_width_m = tools::ParsePositiveNumber(option, value);
-    else if (option == "--max-plate-height") args.world.max_plate_height_m = tools::ParsePositiveNumber(option, value);
-    else if (option == "--door-spacing") args.world.door_spacing_m = tools::ParsePositiveNumber(option, value);
-    else if (option == "--corridor-width") args.world.corridor_width_m = tools::ParsePositiveNumber(option, value);
-    else if (option == "--plate-height") args.world.plate_center_height_m = tools::ParsePositiveNumber(option, value);
-    else throw UsageError("unknown option '" + option + "'");
-  });
-  if (args.crops.empty()) throw UsageError("--crops is required");
-  if (args.out.empty()) throw UsageError("--out is required");
-  return args;
+void AddOptions(CLI::App* app, Args* args) {
+  app->footer(kNotes);
+  app->add_option("--crops", args->crops, "the TSV of plate crops")->required();
+  app->add_option("--out", args->out, "output folder DIR")->required();
+  app->add_option("--name", args->world.name, "world name NAME")->capture_default_str();
+  const auto size = [&](const char* name, double* value, const char* help) {
+    app->add_option(name, *value, help)->capture_default_str()->check(tools::PositiveNumber());
+  };
+  size("--plate-width", &args->world.plate_width_m, "plate width, m");
+  size("--max-plate-height", &args->world.max_plate_height_m, "largest plate height, m");
+  size("--door-spacing", &args->world.door_spacing_m, "distance between doors, m");
+  size("--corridor-width", &args->world.corridor_width_m, "corridor width, m");
+  size("--plate-height", &args->world.plate_center_height_m, "height of the plates' centres, m");
 }
 
 int Run(const Args& args) {
@@ -81,5 +76,5 @@ int Run(const Args& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return tools::RunTool("doorplate_photo_world", kUsage, &ParseArgs, &Run, argc, argv);
+  return tools::RunTool("doorplate_photo_world", kDescription, AddOptions, Run, argc, argv);
 }

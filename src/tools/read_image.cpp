@@ -15,36 +15,25 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "cli_args.h"
+#include "cli_app.h"
 #include "output_guard.h"
 #include "doorplate_localization/text/text_extractor.h"
-#include "json_writer.h"
+#include "result_json.h"
 
 namespace dl = doorplate_localization;
 namespace tools = doorplate_localization::tools;
 
 namespace {
 
-const char* kUsage =
-    "Usage: doorplate_read_image [options] IMAGE...\n"
-    "  --width PX            scale each image to this width first (0: native size; default 0)\n"
-    "  --detector mser|db    text detector (default mser; db needs scripts/fetch_ocr_models.sh)\n"
-    "  --recognizer tesseract|ppocr   recogniser (default tesseract; ppocr needs the same models)\n"
-    "  --band                search only the band of docs/parameters.md (default: the whole image)\n"
-    "  --pattern REGEX       room-number grammar (default: the reader's default)\n"
-    "  --known-rooms A,B,..  known rooms (the validator then maps readings to them)\n"
-    "  --max-regions N       text boxes read per image, largest first (default 32)\n"
-    "  --whitelist CHARS     Tesseract's character whitelist (default: the reader's)\n"
-    "  --model-dir DIR       folder of the learned models (default: DOORPLATE_OCR_MODEL_DIR or "
-    "/usr/local/share/doorplate_localization/ocr_models)\n"
-    "  --json FILE           also write every read as JSON to FILE ('-': stdout, text output off)\n"
-    "Exit status: 0 done, 1 an image or model could not be read, 2 bad command line.\n";
+const char kDescription[] =
+    "The doorplate reader on still images: every text box read, its recogniser output and validated room.";
+const char kNotes[] = "Exit status: 0 done, 1 an image or model could not be read, 2 bad command line.";
 
 struct Args {
   std::vector<std::string> images;
   int width_px = 0;
   int max_regions = 32;
-  std::string json;
+  std::string detector = "mser", recognizer = "tesseract", known_rooms, model_dir, json;
   dl::TextExtractorOptions options;
 };
 
@@ -58,45 +47,39 @@ std::vector<std::string> SplitComma(const std::string& text) {
   return out;
 }
 
-Args Parse(int argc, char** argv) {
-  Args args;
-  args.options.detector.band.enabled = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string option = argv[i];
-    tools::ExitIfHelp(option, kUsage);
+void AddOptions(CLI::App* app, Args* args) {
+  dl::TextExtractorOptions& o = args->options;
+  o.detector.band.enabled = false;
+  app->footer(kNotes);
+  app->add_option("IMAGE", args->images, "images to read")->required();
+  app->add_option("--width", args->width_px, "scale each image to this width first (0: native size)")
+      ->capture_default_str()->transform(tools::WholeNumber(0));
+  app->add_option("--detector", args->detector, "text detector: mser or db (db needs scripts/fetch_ocr_models.sh)")
+      ->capture_default_str();
+  app->add_option("--recognizer", args->recognizer, "recogniser: tesseract or ppocr (ppocr needs the same models)")
+      ->capture_default_str();
+  app->add_flag("--band", o.detector.band.enabled, "search only the band of docs/parameters.md (default: the "
+                "whole image)");
+  app->add_option("--pattern", o.validator.pattern, "room-number grammar")->capture_default_str();
+  app->add_option("--known-rooms", args->known_rooms, "A,B,..: known rooms (the validator then maps readings to them)");
+  app->add_option("--max-regions", args->max_regions, "text boxes read per image, largest first")
+      ->capture_default_str()->transform(tools::WholeNumber(1));
+  app->add_option("--whitelist", o.ocr.whitelist, "Tesseract's character whitelist")->capture_default_str();
+  app->add_option("--model-dir", args->model_dir, "folder of the learned models [DOORPLATE_OCR_MODEL_DIR or "
+                  "/usr/local/share/doorplate_localization/ocr_models]");
+  app->add_option("--json", args->json, "also write every read as JSON to FILE ('-': stdout, text output off)");
+  app->callback([args] {
+    dl::TextExtractorOptions& o = args->options;
     try {
-      if (option == "--width") {
-        args.width_px = static_cast<int>(tools::ParseWholeNumber(option, tools::TakeValue(argc, argv, &i), 0));
-      } else if (option == "--detector") {
-        args.options.detector_type = dl::ParseTextDetectorType(tools::TakeValue(argc, argv, &i), option);
-      } else if (option == "--recognizer") {
-        args.options.recognizer_type = dl::ParseTextRecognizerType(tools::TakeValue(argc, argv, &i), option);
-      } else if (option == "--band") {
-        args.options.detector.band.enabled = true;
-      } else if (option == "--pattern") {
-        args.options.validator.pattern = tools::TakeValue(argc, argv, &i);
-      } else if (option == "--known-rooms") {
-        args.options.validator.known_rooms = SplitComma(tools::TakeValue(argc, argv, &i));
-      } else if (option == "--max-regions") {
-        args.max_regions = static_cast<int>(tools::ParseWholeNumber(option, tools::TakeValue(argc, argv, &i), 1));
-      } else if (option == "--whitelist") {
-        args.options.ocr.whitelist = tools::TakeValue(argc, argv, &i);
-      } else if (option == "--model-dir") {
-        args.options.ppocr.model_dir = args.options.db_detector.model_dir = tools::TakeValue(argc, argv, &i);
-      } else if (option == "--json") {
-        args.json = tools::TakeValue(argc, argv, &i);
-      } else if (!option.empty() && option[0] == '-') {
-        throw tools::UsageError("unknown option " + option);
-      } else {
-        args.images.push_back(option);
-      }
+      o.detector_type = dl::ParseTextDetectorType(args->detector, "--detector");
+      o.recognizer_type = dl::ParseTextRecognizerType(args->recognizer, "--recognizer");
     } catch (const std::invalid_argument& e) {
       throw tools::UsageError(e.what());
     }
-  }
-  if (args.images.empty()) throw tools::UsageError("no image given");
-  args.options.max_regions_per_frame = args.max_regions;
-  return args;
+    if (!args->known_rooms.empty()) o.validator.known_rooms = SplitComma(args->known_rooms);
+    if (!args->model_dir.empty()) o.ppocr.model_dir = o.db_detector.model_dir = args->model_dir;
+    o.max_regions_per_frame = args->max_regions;
+  });
 }
 
 struct ImageResult {
@@ -141,43 +124,31 @@ void PrintText(const ImageResult& r) {
   }
 }
 
-void WriteJson(const Args& args, const std::vector<ImageResult>& results, std::ostream* out) {
-  dl::JsonWriter json(out);
-  json.BeginObject()
-      .Field("detector", dl::ToString(args.options.detector_type))
-      .Field("recognizer", dl::ToString(args.options.recognizer_type))
-      .Field("band", args.options.detector.band.enabled)
-      .Field("width_px", args.width_px)
-      .Key("images")
-      .BeginArray();
+dl::Json ReadsJson(const Args& args, const std::vector<ImageResult>& results) {
+  dl::Json json;
+  json["detector"] = dl::ToString(args.options.detector_type);
+  json["recognizer"] = dl::ToString(args.options.recognizer_type);
+  json["band"] = args.options.detector.band.enabled;
+  json["width_px"] = args.width_px;
+  json["images"] = dl::Json::array();
   for (const ImageResult& r : results) {
-    json.BeginObject()
-        .Field("file", r.file)
-        .Field("width_px", r.size_px.width)
-        .Field("height_px", r.size_px.height)
-        .Field("cpu_seconds", r.cpu_seconds)
-        .Field("wall_seconds", r.wall_seconds)
-        .Key("reads")
-        .BeginArray();
+    dl::Json image;
+    image["file"] = r.file;
+    image["width_px"] = r.size_px.width;
+    image["height_px"] = r.size_px.height;
+    image["cpu_seconds"] = r.cpu_seconds;
+    image["wall_seconds"] = r.wall_seconds;
+    image["reads"] = dl::Json::array();
     for (const dl::PlateObservation& o : r.reads) {
-      json.BeginObject()
-          .Field("raw_text", o.raw_text)
-          .Field("raw_confidence", o.raw_confidence)
-          .Field("room", o.text)
-          .Field("confidence", o.confidence)
-          .Key("box_px")
-          .BeginArray()
-          .Value(o.box_px.x)
-          .Value(o.box_px.y)
-          .Value(o.box_px.width)
-          .Value(o.box_px.height)
-          .EndArray()
-          .EndObject();
+      image["reads"].push_back({{"raw_text", o.raw_text},
+                                {"raw_confidence", o.raw_confidence},
+                                {"room", o.text},
+                                {"confidence", o.confidence},
+                                {"box_px", {o.box_px.x, o.box_px.y, o.box_px.width, o.box_px.height}}});
     }
-    json.EndArray().EndObject();
+    json["images"].push_back(image);
   }
-  json.EndArray().EndObject();
-  *out << "\n";
+  return json;
 }
 
 int Run(const Args& args) {
@@ -200,11 +171,10 @@ int Run(const Args& args) {
     }
   }
   if (args.json == "-") {
-    WriteJson(args, results, &std::cout);
+    std::cout << dl::ResultJsonText(ReadsJson(args, results));
   } else if (!args.json.empty()) {
     std::ofstream out(args.json);
-    if (!out) throw std::runtime_error("cannot write " + args.json);
-    WriteJson(args, results, &out);
+    if (!out || !(out << dl::ResultJsonText(ReadsJson(args, results)))) throw std::runtime_error("cannot write " + args.json);
   }
   return status;
 }
@@ -212,5 +182,5 @@ int Run(const Args& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return tools::RunTool("doorplate_read_image", kUsage, &Parse, &Run, argc, argv);
+  return tools::RunTool("doorplate_read_image", kDescription, AddOptions, Run, argc, argv);
 }

@@ -13,13 +13,15 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "cli_args.h"
+#include "cli_app.h"
 #include "output_guard.h"
+#include "doorplate_localization/common/limits.h"
 #include "doorplate_localization/sim/camera_renderer.h"
 #include "doorplate_localization/sim/laser_simulator.h"
 #include "doorplate_localization/sim/people.h"
@@ -30,19 +32,16 @@ namespace dl = doorplate_localization;
 
 namespace {
 
-const char kUsage[] =
-    "usage: doorplate_sim_snapshot --world FILE --camera OUT.png [--topdown OUT2.png]\n"
-    "         [--x X_M --y Y_M (--theta RAD | --theta-deg DEG)] [--seed S]\n"
-    "         [--speed MPS] [--yaw-rate RPS] [--time S] [--clean] [--benchmark N]\n"
-    "  The pose (base_link in the world frame) defaults to the world's robot start.\n"
-    "  --time places the world's people where they are S simulated seconds in (default 0).\n"
-    "  --seed seeds the camera noise and the laser scan (default 1); --speed and --yaw-rate set the\n"
-    "  motion blur; --clean renders without blur, noise or lighting changes; --benchmark N renders N\n"
-    "  frames and prints the time per frame.\n";
+const char kDescription[] =
+    "Renders what the simulated camera sees at one pose of a world file, and optionally a top-down view of "
+    "the world.";
+const char kNotes[] =
+    "The pose (base_link in the world frame) defaults to the world's robot start; give all of --x, --y and\n"
+    "--theta (or --theta-deg), or none. --clean renders without blur, noise or lighting changes.";
 
 struct Args {
   std::string world, camera_out, topdown_out;
-  std::optional<double> x, y, theta;
+  std::optional<double> x, y, theta, theta_deg;
   std::uint64_t seed = 1;
   double speed_mps = 0.0, yaw_rate_rps = 0.0, time_s = 0.0;
   bool clean = false;
@@ -50,44 +49,34 @@ struct Args {
 };
 
 namespace tools = doorplate_localization::tools;
-using tools::ParseNumber;
 using tools::UsageError;
 
-Args ParseArgs(int argc, char** argv) {
-  Args args;
-  for (int i = 1; i < argc; ++i) {
-    const std::string option = argv[i];
-    tools::ExitIfHelp(option, kUsage);
-    if (option == "--clean") {
-      args.clean = true;
-      continue;
+void AddOptions(CLI::App* app, Args* args) {
+  app->footer(kNotes);
+  app->add_option("--world", args->world, "world file (worlds/*.yaml)")->required();
+  app->add_option("--camera", args->camera_out, "the camera image to write (PNG)")->required();
+  app->add_option("--topdown", args->topdown_out, "also write the top-down view here");
+  app->add_option("--x", args->x, "x of the pose, m")->check(tools::Number());
+  app->add_option("--y", args->y, "y of the pose, m")->check(tools::Number());
+  app->add_option("--theta", args->theta, "heading of the pose, rad")->check(tools::Number());
+  app->add_option("--theta-deg", args->theta_deg, "heading of the pose, degrees")->check(tools::Number());
+  app->add_option("--seed", args->seed, "seeds the camera noise and the laser scan")->capture_default_str()
+      ->transform(tools::Seed());
+  app->add_option("--speed", args->speed_mps, "speed for the motion blur, m/s")->capture_default_str()
+      ->check(tools::Number());
+  app->add_option("--yaw-rate", args->yaw_rate_rps, "yaw rate for the motion blur, rad/s")->capture_default_str()
+      ->check(tools::Number());
+  app->add_option("--time", args->time_s, "place the world's people where they are this many simulated seconds in")
+      ->capture_default_str()->check(tools::Number(0.0));
+  app->add_flag("--clean", args->clean, "render without blur, noise or lighting changes");
+  app->add_option("--benchmark", args->benchmark_frames, "render this many frames and print the time per frame")
+      ->transform(tools::WholeNumber(0));
+  app->callback([args] {
+    if (args->theta_deg) args->theta = *args->theta_deg * M_PI / 180.0;
+    if (args->x.has_value() != args->y.has_value() || args->x.has_value() != args->theta.has_value()) {
+      throw UsageError("give all of --x, --y and --theta (or --theta-deg), or none");
     }
-    const std::string value = tools::TakeValue(argc, argv, &i);
-    if (option == "--world") args.world = value;
-    else if (option == "--camera") args.camera_out = value;
-    else if (option == "--topdown") args.topdown_out = value;
-    else if (option == "--x") args.x = ParseNumber(option, value);
-    else if (option == "--y") args.y = ParseNumber(option, value);
-    else if (option == "--theta") args.theta = ParseNumber(option, value);
-    else if (option == "--theta-deg") args.theta = ParseNumber(option, value) * M_PI / 180.0;
-    else if (option == "--speed") args.speed_mps = ParseNumber(option, value);
-    else if (option == "--yaw-rate") args.yaw_rate_rps = ParseNumber(option, value);
-    else if (option == "--time") {
-      args.time_s = ParseNumber(option, value);
-      if (!(args.time_s >= 0.0)) throw UsageError("--time must be >= 0");
-    }
-    else if (option == "--seed") args.seed = static_cast<std::uint64_t>(
-        tools::ParseWholeNumber(option, value, 0, 1e19));
-    else if (option == "--benchmark") args.benchmark_frames = static_cast<int>(
-        tools::ParseWholeNumber(option, value, 0));
-    else throw UsageError("unknown option '" + option + "'");
-  }
-  if (args.world.empty()) throw UsageError("--world is required");
-  if (args.camera_out.empty()) throw UsageError("--camera is required");
-  if (args.x.has_value() != args.y.has_value() || args.x.has_value() != args.theta.has_value()) {
-    throw UsageError("give all of --x, --y and --theta (or --theta-deg), or none");
-  }
-  return args;
+  });
 }
 
 void Write(const std::string& path, const cv::Mat& image) {
@@ -132,6 +121,12 @@ int Run(const Args& args) {
                                  {{"--camera", args.camera_out}, {"--topdown", args.topdown_out}});
   dl::World world = dl::LoadWorldFile(args.world);
   dl::PlacePeople(world, args.time_s);
+  if (args.x) {  // a pose at 1e300 m rendered an empty picture (issue 18): the world's limit, as its start's
+    for (const auto& [option, value] : {std::pair{"--x", *args.x}, std::pair{"--y", *args.y}}) {
+      const std::string problem = dl::limits::CheckCoordinate(value);
+      if (!problem.empty()) throw tools::UsageError(std::string(option) + ": " + problem);
+    }
+  }
   const dl::Pose2D pose = args.x ? dl::Pose2D{*args.x, *args.y, *args.theta} : world.start_pose;
   const dl::CameraRenderer camera(world, world.sensors.camera);
   std::mt19937_64 rng(args.seed);
@@ -153,5 +148,5 @@ int Run(const Args& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return tools::RunTool("doorplate_sim_snapshot", kUsage, ParseArgs, Run, argc, argv);
+  return tools::RunTool("doorplate_sim_snapshot", kDescription, AddOptions, Run, argc, argv);
 }

@@ -12,7 +12,8 @@
 #include <sstream>
 #include <string>
 
-#include "cli_args.h"
+#include "cli_app.h"
+#include "output_guard.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/sim/world_loader.h"
 #include "soak_run.h"
@@ -21,61 +22,6 @@ namespace dl = doorplate_localization;
 using dl::tools::UsageError;
 
 namespace {
-
-const char kUsage[] =
-    "usage: doorplate_soak --world FILE [--seconds 3600] [--window 300] [--camera-hz HZ] [--speed 0.4]\n"
-    "                      [--particles 2000] [--no-localizer] [--seed 1] [--markdown OUT.md]\n"
-    "                      [--faults [--first-fault 30] [--settle 10] [--max-recovery 180]]\n"
-    "  Simulated seconds; --camera-hz 0 (default) uses the world's camera rate. --faults: the run ends\n"
-    "  when the last fault has recovered (or given up), or at --seconds.\n";
-
-struct Args {
-  std::string world, markdown;
-  dl::tools::SoakOptions soak;
-};
-
-double ParseNumber(const std::string& option, const std::string& text, double min) {
-  const auto value = dl::tools::ParseFiniteNumber(text);
-  if (!value || *value < min) throw UsageError(option + ": '" + text + "' is not a number >= " + std::to_string(min));
-  return *value;
-}
-
-Args ParseArgs(int argc, char** argv) {
-  Args args;
-  for (int i = 1; i < argc; ++i) {
-    const std::string option = argv[i];
-    if (option == "--help" || option == "-h") {
-      std::cout << kUsage;
-      std::exit(0);
-    }
-    if (option == "--no-localizer") {
-      args.soak.localizer = false;
-      continue;
-    }
-    if (option == "--faults") {
-      args.soak.faults.schedule = dl::tools::IssueFaultSchedule();
-      continue;
-    }
-    if (i + 1 >= argc) throw UsageError(option + " needs a value");
-    const std::string value = argv[++i];
-    if (option == "--world") args.world = value;
-    else if (option == "--markdown") args.markdown = value;
-    else if (option == "--seconds") args.soak.duration_s = ParseNumber(option, value, 1.0);
-    else if (option == "--window") args.soak.window_s = ParseNumber(option, value, 1.0);
-    else if (option == "--camera-hz") args.soak.camera_rate_hz = ParseNumber(option, value, 0.0);
-    else if (option == "--speed") args.soak.speed_mps = ParseNumber(option, value, 0.01);
-    else if (option == "--particles") args.soak.max_particles = static_cast<int>(ParseNumber(option, value, 100.0));
-    else if (option == "--first-fault") args.soak.faults.first_fault_s = ParseNumber(option, value, 0.0);
-    else if (option == "--settle") args.soak.faults.settle_s = ParseNumber(option, value, 0.0);
-    else if (option == "--max-recovery") args.soak.faults.max_recovery_s = ParseNumber(option, value, 1.0);
-    else if (option == "--seed") args.soak.seed = static_cast<std::uint64_t>(ParseNumber(option, value, 0.0));
-    else throw UsageError("unknown option '" + option + "'");
-  }
-  if (args.world.empty()) throw UsageError("--world is required");
-  if (args.soak.window_s > args.soak.duration_s) throw UsageError("--window must not exceed --seconds");
-  if (!args.soak.faults.schedule.empty() && !args.soak.localizer) throw UsageError("--faults needs the localizer");
-  return args;
-}
 
 std::string Table(const dl::tools::SoakResult& r, const dl::tools::SoakOptions& o) {
   std::ostringstream out;
@@ -132,35 +78,70 @@ bool AllRecovered(const dl::tools::SoakResult& r, const dl::tools::FaultOptions&
   return true;
 }
 
+const char kDescription[] =
+    "One long simulated run of the robot sweeping a corridor with laser, camera, the text extractor and Text AMCL.";
+const char kNotes[] =
+    "Simulated seconds. --faults: the run ends when the last fault has recovered (or given up), or at --seconds.\n"
+    "Exit status 1 if any error was counted or a fault did not recover, 2 on a bad command line.";
+
+struct Args {
+  std::string world, markdown;
+  bool no_localizer = false, faults = false;
+  dl::tools::SoakOptions soak;
+};
+
+void AddOptions(CLI::App* app, Args* args) {
+  namespace tools = dl::tools;
+  dl::tools::SoakOptions& o = args->soak;
+  app->footer(kNotes);
+  app->add_option("--world", args->world, "world file (worlds/*.yaml)")->required();
+  app->add_option("--seconds", o.duration_s, "simulated seconds")->capture_default_str()->check(tools::Number(1.0));
+  app->add_option("--window", o.window_s, "report window, simulated s")->capture_default_str()
+      ->check(tools::Number(1.0));
+  app->add_option("--camera-hz", o.camera_rate_hz, "camera rate (0: the world's)")->capture_default_str()
+      ->check(tools::Number(0.0));
+  app->add_option("--speed", o.speed_mps, "cruise speed, m/s")->capture_default_str()->check(tools::Number(0.01));
+  app->add_option("--particles", o.max_particles, "filter max_particles")->capture_default_str()
+      ->transform(tools::WholeNumber(100));
+  app->add_flag("--no-localizer", args->no_localizer, "run without Text AMCL");
+  app->add_option("--seed", o.seed, "simulator seed")->capture_default_str()->transform(tools::Seed());
+  app->add_option("--markdown", args->markdown, "also write the report to this file");
+  app->add_flag("--faults", args->faults, "inject issue 8's faults one after another (fault_run.h)");
+  app->add_option("--first-fault", o.faults.first_fault_s, "simulated s before the first fault")
+      ->capture_default_str()->check(tools::Number(0.0));
+  app->add_option("--settle", o.faults.settle_s, "simulated s between a recovery and the next fault")
+      ->capture_default_str()->check(tools::Number(0.0));
+  app->add_option("--max-recovery", o.faults.max_recovery_s, "simulated s after which a fault did not recover")
+      ->capture_default_str()->check(tools::Number(1.0));
+  app->callback([args] {
+    args->soak.localizer = !args->no_localizer;
+    if (args->faults) args->soak.faults.schedule = dl::tools::IssueFaultSchedule();
+    if (args->soak.window_s > args->soak.duration_s) throw UsageError("--window must not exceed --seconds");
+    if (args->faults && !args->soak.localizer) throw UsageError("--faults needs the localizer");
+  });
+}
+
+int Run(const Args& args) {
+  dl::tools::RefuseOverwritingInputs({{"--world", args.world}}, {{"--markdown", args.markdown}});  // issue 18
+  const dl::World world = dl::LoadWorldFile(args.world);
+  const dl::tools::SoakResult result = dl::tools::RunSoak(world, args.soak);
+  std::ostringstream report;
+  report << std::fixed << std::setprecision(1) << "World `" << world.name << "`, " << args.soak.duration_s
+         << " simulated s in windows of " << args.soak.window_s << " s, seed " << args.soak.seed << ", localizer "
+         << (args.soak.localizer ? "on" : "off") << ", driven " << result.distance_m << " m.\n\nRSS at start "
+         << result.start_rss_mb << " MB, at end " << (result.windows.empty() ? 0.0 : result.windows.back().rss_mb)
+         << " MB; errors: " << result.errors << ".\n\n"
+         << Table(result, args.soak);
+  if (!args.soak.faults.schedule.empty()) report << "\n" << FaultTable(result, args.soak.faults);
+  for (const std::string& e : result.first_errors) report << "\n- error: " << e;
+  std::cout << report.str();
+  if (!args.markdown.empty()) dl::WriteFileAtomically(args.markdown, report.str());
+  const bool faults_ok = args.soak.faults.schedule.empty() || AllRecovered(result, args.soak.faults);
+  return result.errors == 0 && faults_ok ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  Args args;
-  try {
-    args = ParseArgs(argc, argv);
-  } catch (const UsageError& e) {
-    std::cerr << "doorplate_soak: " << e.what() << "\n" << kUsage;
-    return 2;
-  }
-  try {
-    const dl::World world = dl::LoadWorldFile(args.world);
-    const dl::tools::SoakResult result = dl::tools::RunSoak(world, args.soak);
-    std::ostringstream report;
-    report << std::fixed << std::setprecision(1) << "World `" << world.name << "`, " << args.soak.duration_s
-           << " simulated s in windows of " << args.soak.window_s << " s, seed " << args.soak.seed
-           << ", localizer " << (args.soak.localizer ? "on" : "off") << ", driven " << result.distance_m
-           << " m.\n\nRSS at start " << result.start_rss_mb << " MB, at end "
-           << (result.windows.empty() ? 0.0 : result.windows.back().rss_mb) << " MB; errors: " << result.errors
-           << ".\n\n"
-           << Table(result, args.soak);
-    if (!args.soak.faults.schedule.empty()) report << "\n" << FaultTable(result, args.soak.faults);
-    for (const std::string& e : result.first_errors) report << "\n- error: " << e;
-    std::cout << report.str();
-    if (!args.markdown.empty()) dl::WriteFileAtomically(args.markdown, report.str());
-    const bool faults_ok = args.soak.faults.schedule.empty() || AllRecovered(result, args.soak.faults);
-    return result.errors == 0 && faults_ok ? 0 : 1;
-  } catch (const std::exception& e) {
-    std::cerr << "doorplate_soak: " << e.what() << "\n";
-    return 1;
-  }
+  return dl::tools::RunTool("doorplate_soak", kDescription, AddOptions, Run, argc, argv);
 }

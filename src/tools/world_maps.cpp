@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "cli_args.h"
+#include "cli_app.h"
 #include "map_tool_output.h"
 #include "output_guard.h"
 #include "doorplate_localization/maps/building_map.h"
@@ -24,14 +24,12 @@ namespace dl = doorplate_localization;
 
 namespace {
 
-const char kUsage[] =
-    "usage: doorplate_world_maps --world FILE --out BASE [--resolution 0.05] [--laser-height H_M]\n"
-    "       doorplate_world_maps --building FILE --out DIR [--resolution 0.05] [--laser-height H_M]\n"
-    "  --world: writes BASE.pgm, BASE.yaml and BASE.text_map.yaml. --building (docs/building-format.md):\n"
-    "  writes DIR/<world name>.{pgm,yaml,text_map.yaml} for every floor with a world, then\n"
-    "  DIR/<building name>.building.yaml naming those maps (floors without a world keep their maps) and\n"
-    "  the same lifts, each stop checked to be on a free cell. --resolution is metres per cell; the laser\n"
-    "  height (default: each world's laser mount height) picks which surfaces are obstacles.\n";
+const char kDescription[] = "Writes the ground-truth maps of a world file, or of every floor of a building file.";
+const char kNotes[] =
+    "--world: writes BASE.pgm, BASE.yaml and BASE.text_map.yaml. --building (docs/building-format.md):\n"
+    "writes DIR/<world name>.{pgm,yaml,text_map.yaml} for every floor with a world, then\n"
+    "DIR/<building name>.building.yaml naming those maps (floors without a world keep their maps) and\n"
+    "the same lifts, each stop checked to be on a free cell.";
 
 struct Args {
   std::string world, building, out;
@@ -42,19 +40,19 @@ struct Args {
 namespace tools = doorplate_localization::tools;
 using tools::UsageError;
 
-Args ParseArgs(int argc, char** argv) {
-  Args args;
-  tools::ForEachOptionValue(argc, argv, kUsage, [&](const std::string& option, const std::string& value) {
-    if (option == "--world") args.world = value;
-    else if (option == "--building") args.building = value;
-    else if (option == "--out") args.out = value;
-    else if (option == "--resolution") args.resolution_m = tools::ParsePositiveNumber(option, value);
-    else if (option == "--laser-height") args.laser_height_m = tools::ParsePositiveNumber(option, value);
-    else throw UsageError("unknown option '" + option + "'");
+void AddOptions(CLI::App* app, Args* args) {
+  app->footer(kNotes);
+  app->add_option("--world", args->world, "world file (worlds/*.yaml)");
+  app->add_option("--building", args->building, "building file (worlds/*.building.yaml)");
+  app->add_option("--out", args->out, "BASE of the maps (--world) or their folder DIR (--building)")->required();
+  app->add_option("--resolution", args->resolution_m, "metres per cell")->capture_default_str()
+      ->check(tools::PositiveNumber());
+  app->add_option("--laser-height", args->laser_height_m,
+                  "height whose surfaces are obstacles, m [each world's laser mount height]")
+      ->check(tools::PositiveNumber());
+  app->callback([args] {
+    if (args->world.empty() == args->building.empty()) throw UsageError("give one of --world and --building");
   });
-  if (args.world.empty() == args.building.empty()) throw UsageError("give one of --world and --building");
-  if (args.out.empty()) throw UsageError("--out is required");
-  return args;
 }
 
 int Count(const dl::OccupancyGrid& grid, std::int8_t value) {
@@ -160,5 +158,5 @@ int Run(const Args& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return tools::RunTool("doorplate_world_maps", kUsage, ParseArgs, Run, argc, argv);
+  return tools::RunTool("doorplate_world_maps", kDescription, AddOptions, Run, argc, argv);
 }

@@ -4,28 +4,32 @@
 
 #include <set>
 
+#include "cli_app.h"
+
 namespace doorplate_localization {
 namespace {
 
-EvalArgs Parsed(const std::vector<std::string>& words) {
-  std::vector<OptionSpec> specs = CommonOptions();
-  specs.push_back({"band", "on", "band"});
-  EvalArgs args("ocr", specs);
-  args.Parse(words);
-  return args;
-}
-
-std::string UsageMessage(const std::vector<std::string>& words) {
+// `words` parsed by an `ocr` subcommand with the common options; "" when they parse, else the error.
+std::string Parse(const std::string& words, CommonArgs* common) {
+  CLI::App eval("test", "doorplate_eval");
+  CLI::App* ocr = eval.add_subcommand("ocr");
+  AddCommonOptions(ocr, common);
   try {
-    ReadCommonArgs(Parsed(words));
-  } catch (const UsageError& e) {
+    eval.parse("ocr " + words, false);
+  } catch (const CLI::ParseError& e) {
     return e.what();
   }
   return "";
 }
 
-TEST(EvalArgs, ReadsCommonOptionsWithDefaults) {
-  const CommonArgs common = ReadCommonArgs(Parsed({"--world", "w.yaml", "--seed", "7", "--json", "out.json"}));
+std::string Error(const std::string& words) {
+  CommonArgs common;
+  return Parse(words, &common);
+}
+
+TEST(AddCommonOptions, ReadsTheOptionsWithTheirDefaults) {
+  CommonArgs common;
+  ASSERT_EQ(Parse("--world w.yaml --seed 7 --json out.json", &common), "");
   EXPECT_EQ(common.world_path, "w.yaml");
   EXPECT_EQ(common.seed, 7u);
   EXPECT_EQ(common.passes, 3);
@@ -34,27 +38,17 @@ TEST(EvalArgs, ReadsCommonOptionsWithDefaults) {
   EXPECT_EQ(common.dump_dir, "");
 }
 
-TEST(EvalArgs, ReadsOnOffSwitches) {
-  EXPECT_TRUE(Parsed({"--world", "w"}).OnOff("band"));
-  EXPECT_FALSE(Parsed({"--world", "w", "--band", "off"}).OnOff("band"));
-  EXPECT_THROW(Parsed({"--world", "w", "--band", "maybe"}).OnOff("band"), UsageError);
-}
-
-TEST(EvalArgs, ErrorsNameTheOption) {
-  EXPECT_NE(UsageMessage({"--world", "w", "--sede", "3"}).find("unknown option --sede"), std::string::npos);
-  EXPECT_NE(UsageMessage({"--world"}).find("--world needs a value"), std::string::npos);
-  EXPECT_NE(UsageMessage({"--seed", "3"}).find("--world is required"), std::string::npos);
-  EXPECT_NE(UsageMessage({"--world", "w", "--passes", "0"}).find("--passes"), std::string::npos);
-  EXPECT_NE(UsageMessage({"--world", "w", "--speed-mps", "fast"}).find("--speed-mps"), std::string::npos);
-  EXPECT_NE(UsageMessage({"--world", "w", "--seed", "-1"}).find("--seed"), std::string::npos);
-  EXPECT_NE(UsageMessage({"--world", "w", "stray"}).find("'stray'"), std::string::npos);
-}
-
-TEST(EvalArgs, HelpStopsParsingAndUsageListsTheOptions) {
-  const EvalArgs args = Parsed({"--help", "--bogus"});
-  EXPECT_TRUE(args.help_requested());
-  EXPECT_NE(args.Usage().find("--world (required)"), std::string::npos);
-  EXPECT_NE(args.Usage().find("--passes"), std::string::npos);
+TEST(AddCommonOptions, ErrorsNameTheOption) {
+  EXPECT_NE(Error("--world w --sede 3").find("--sede"), std::string::npos);
+  EXPECT_NE(Error("--seed 3").find("--world is required"), std::string::npos);
+  EXPECT_NE(Error("--world w --passes 0").find("--passes: '0' is not a whole number >= 1"), std::string::npos);
+  EXPECT_NE(Error("--world w --speed-mps fast").find("--speed-mps: 'fast' is not a number > 0"), std::string::npos);
+  EXPECT_NE(Error("--world w --speed-mps 0").find("--speed-mps"), std::string::npos);
+  EXPECT_NE(Error("--world w --seed -1").find("--seed"), std::string::npos);
+  EXPECT_NE(Error("--world w --seed 1x").find("--seed: '1x' is not a whole number >= 0"), std::string::npos);
+  EXPECT_NE(Error("--world w --json /no/such/folder/out.json").find("--json: folder /no/such/folder does not exist"),
+            std::string::npos);
+  EXPECT_NE(Error("--world w stray").find("stray"), std::string::npos);
 }
 
 TEST(PassSeed, IsDeterministicAndDistinctPerPassAndSeed) {

@@ -3,8 +3,6 @@
 
 #include <gtest/gtest.h>
 
-#include <sstream>
-
 namespace doorplate_localization {
 namespace {
 
@@ -39,21 +37,17 @@ LocalizeEvalResult ThreeTrials(bool kidnap) {
   return r;
 }
 
-std::string Json(const LocalizeEvalResult& result) {
-  std::ostringstream out;
-  JsonWriter json(&out);
+std::string JsonText(const LocalizeEvalResult& result) {
   LocalizeEvalRunInfo info;
   info.world_file = "worlds/w.yaml";
   info.map_file = "maps/w.text_map.yaml";
   info.command_line = "doorplate_eval localize --world worlds/w.yaml";
   info.options.seed = 7;
-  WriteLocalizeEvalJson(result, info, &json);
-  EXPECT_TRUE(json.complete());
-  return out.str();
+  return ResultJsonText(LocalizeEvalJson(result, info));
 }
 
-TEST(WriteLocalizeEvalJson, WritesTheTableThreeTotalsAndTheRun) {
-  const std::string json = Json(ThreeTrials(false));
+TEST(LocalizeEvalJson, WritesTheTableThreeTotalsAndTheRun) {
+  const std::string json = JsonText(ThreeTrials(false));
   for (const char* expected :
        {"\"method\": \"amcl\"", "\"seed\": 7,", "\"trials\": 3,", "\"successes\": 1,", "\"success_rate\": 0.3333333333,",
         "\"wrong_convergences\": 1,", "\"not_converged\": 1,", "\"median_travel_m\": 6,", "\"longest_travel_m\": 8,",
@@ -64,24 +58,24 @@ TEST(WriteLocalizeEvalJson, WritesTheTableThreeTotalsAndTheRun) {
   EXPECT_EQ(json.find("recoveries"), std::string::npos);  // no kidnap totals without kidnapping
 }
 
-TEST(WriteLocalizeEvalJson, WritesOneRowPerTrialNamedByItsOutcome) {
-  const std::string json = Json(ThreeTrials(false));
+TEST(LocalizeEvalJson, WritesOneRowPerTrialNamedByItsOutcome) {
+  const std::string json = JsonText(ThreeTrials(false));
   EXPECT_NE(json.find("\"wrong_convergence\": true"), std::string::npos);
   EXPECT_NE(json.find("\"convergence\": {"), std::string::npos);
   EXPECT_NE(json.find("\"end_of_search\": {"), std::string::npos);
   EXPECT_NE(json.find("\"truth\": [\n          1,\n          2,\n          0.5\n        ]"), std::string::npos) << json;
 }
 
-TEST(WriteLocalizeEvalJson, RecordsTheDriveAndWhereTheStartPosesCameFrom) {
+TEST(LocalizeEvalJson, RecordsTheDriveAndWhereTheStartPosesCameFrom) {
   LocalizeEvalResult result = ThreeTrials(false);
-  EXPECT_NE(Json(result).find("\"start_poses\": \"main corridor band\""), std::string::npos);
-  EXPECT_NE(Json(result).find("\"drive\": \"patrol\""), std::string::npos);
+  EXPECT_NE(JsonText(result).find("\"start_poses\": \"main corridor band\""), std::string::npos);
+  EXPECT_NE(JsonText(result).find("\"drive\": \"patrol\""), std::string::npos);
   result.floor_start_poses = true;
-  EXPECT_NE(Json(result).find("\"start_poses\": \"floor: the world's corridors, length-weighted\""), std::string::npos);
+  EXPECT_NE(JsonText(result).find("\"start_poses\": \"floor: the world's corridors, length-weighted\""), std::string::npos);
 }
 
-TEST(WriteLocalizeEvalJson, AddsTheKidnapTotalsWhenKidnapping) {
-  const std::string json = Json(ThreeTrials(true));
+TEST(LocalizeEvalJson, AddsTheKidnapTotalsWhenKidnapping) {
+  const std::string json = JsonText(ThreeTrials(true));
   EXPECT_NE(json.find("\"kidnaps\": 1,"), std::string::npos) << json;
   EXPECT_NE(json.find("\"recoveries\": 1,"), std::string::npos);
   EXPECT_NE(json.find("\"recovery_rate\": 1,"), std::string::npos);

@@ -2,8 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <sstream>
-
 namespace doorplate_localization {
 namespace {
 
@@ -38,19 +36,15 @@ OcrEvalResult TwoPassResult() {
   return r;
 }
 
-std::string Json(const OcrEvalResult& result) {
-  std::ostringstream out;
-  JsonWriter json(&out);
+std::string JsonText(const OcrEvalResult& result) {
   OcrEvalRunInfo info;
   info.world_file = "worlds/w.yaml";
   info.options.passes = 2;
-  WriteOcrEvalJson(result, info, &json);
-  EXPECT_TRUE(json.complete());
-  return out.str();
+  return ResultJsonText(OcrEvalJson(result, info));
 }
 
-TEST(WriteOcrEvalJson, SumsThePassesIntoTheTotals) {
-  const std::string json = Json(TwoPassResult());
+TEST(OcrEvalJson, SumsThePassesIntoTheTotals) {
+  const std::string json = JsonText(TwoPassResult());
   EXPECT_NE(json.find("\"plates_total\": 4,"), std::string::npos);
   EXPECT_NE(json.find("\"plates_correct\": 3,"), std::string::npos);
   EXPECT_NE(json.find("\"accuracy\": 0.75,"), std::string::npos);
@@ -60,16 +54,16 @@ TEST(WriteOcrEvalJson, SumsThePassesIntoTheTotals) {
   EXPECT_NE(json.find("\"world_file\": \"worlds/w.yaml\""), std::string::npos);
 }
 
-TEST(WriteOcrEvalJson, SplitsTheDetectorBoxesByPlateInView) {
-  const std::string json = Json(TwoPassResult());
+TEST(OcrEvalJson, SplitsTheDetectorBoxesByPlateInView) {
+  const std::string json = JsonText(TwoPassResult());
   EXPECT_NE(json.find("\"boxes_per_frame\": 0.5,"), std::string::npos);
   EXPECT_NE(json.find("\"boxes_per_frame_plate_in_view\": 1,"), std::string::npos);
   EXPECT_NE(json.find("\"boxes_per_frame_no_plate\": 0.1666666667,"), std::string::npos);
   EXPECT_NE(json.find("\"ms_per_frame\": 5"), std::string::npos);
 }
 
-TEST(WriteOcrEvalJson, ListsPerPlateDetailAndEvents) {
-  const std::string json = Json(TwoPassResult());
+TEST(OcrEvalJson, ListsPerPlateDetailAndEvents) {
+  const std::string json = JsonText(TwoPassResult());
   EXPECT_NE(json.find("\"reported\": [\n            \"207\"\n          ]"), std::string::npos) << json;
   EXPECT_NE(json.find("\"kind\": \"false_read\""), std::string::npos);
   EXPECT_NE(json.find("\"box_px\": [\n        1,\n        2,\n        3,\n        4\n      ]"), std::string::npos) << json;

@@ -138,6 +138,25 @@ TEST(FromInitialPoseMsg, RefusesAnotherFrameABrokenQuaternionAndANegativeVarianc
   EXPECT_EQ(mean.x_m, 9.0);
 }
 
+// Found by fuzz/message_conversions_fuzz.cpp (issue 18): a pose at 3.4e38 m was accepted, and a covariance
+// symmetric within this check's tolerance (2.2e-26 off the diagonal of a zero matrix) was handed to
+// TextAmcl::Initialize, whose norm-relative check refused it.
+TEST(FromInitialPoseMsg, RefusesAPoseBeyondTheCoordinateLimitAndHandsOnAnExactlySymmetricCovariance) {
+  Pose2D mean{9.0, 9.0, 0.0};
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  geometry_msgs::PoseWithCovarianceStamped msg = InitialPose();
+  msg.pose.pose.position.y = 3.4028234663852886e38;
+  EXPECT_EQ(FromInitialPoseMsg(msg, "map", &mean, &cov),
+            "pose.position.y: must be finite and within +-1e+06 m (limits::kMaxCoordinateM), got 3.40282e+38");
+  EXPECT_EQ(mean.x_m, 9.0);
+  msg = InitialPose();
+  for (double& c : msg.pose.covariance) c = 0.0;
+  msg.pose.covariance[5 * 6 + 1] = 2.2247599395766315e-26;  // yaw row, y column; its mirror stays 0
+  ASSERT_EQ(FromInitialPoseMsg(msg, "map", &mean, &cov), "");
+  EXPECT_EQ(cov, cov.transpose());
+  EXPECT_TRUE(cov.isApprox(cov.transpose(), 1e-9));  // TextAmcl::Initialize's check
+}
+
 TEST(ToAmclPoseMsg, PlacesTheCovarianceAtXYAndYaw) {
   PoseEstimate estimate;
   estimate.pose = {1.0, 2.0, 0.5};

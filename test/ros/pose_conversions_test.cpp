@@ -100,6 +100,17 @@ TEST(ToPose2D, DropsRollAndPitchAndIgnoresTheQuaternionsScale) {
   EXPECT_NEAR(ToPose2D(scaled).theta_rad, -0.7, 1e-12);
 }
 
+// A fuzzing find (issue 18): components near 1e300 (or 1e-300) over- or underflowed in the yaw's products,
+// and a map message with such an origin was accepted with a NaN origin yaw.
+TEST(ToPose2D, TheYawOfAHugeOrTinyQuaternionIsItsRotations) {
+  for (const double scale : {1e300, 1e-300}) {
+    geometry_msgs::Transform t = Transform(0, 0, 0, 0, 0, 0.4);
+    t.rotation.z *= scale;
+    t.rotation.w *= scale;
+    EXPECT_NEAR(ToPose2D(t).theta_rad, 0.4, 1e-12) << scale;
+  }
+}
+
 TEST(MapToOdom, ComposesTheEstimateWithTheInverseOdometry) {
   const Pose2D base_in_odom{2.0, 1.0, 0.3};
   const Pose2D map_to_odom{-0.5, 0.7, -0.2};

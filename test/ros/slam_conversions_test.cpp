@@ -212,5 +212,42 @@ TEST(PoseEntropy, GrowsWithTheSpreadAndStaysFiniteForOnePose) {
   EXPECT_TRUE(std::isfinite(PoseEntropy(one)));
 }
 
+// The mapping nodelet's /diagnostics (issue 18): "mapping" only while scans are taken, why scans are
+// dropped, an error above all.
+TEST(ToMapperDiagnosticStatus, SaysMappingOnlyWhileScansAreTakenAndNamesDropsAndErrors) {
+  MapperHealth h;
+  diagnostic_msgs::DiagnosticStatus d = ToMapperDiagnosticStatus(h, "/slam_mapping: mapping", "/slam_mapping");
+  EXPECT_EQ(d.level, diagnostic_msgs::DiagnosticStatus::WARN);
+  EXPECT_EQ(d.message, "waiting_for_scan");
+  EXPECT_EQ(d.name, "/slam_mapping: mapping");
+  h.scan_age_s = 0.1;
+  h.scan_rate_hz = 10.0;
+  h.scans_processed = 42;
+  h.map = "310 x 40 at 0.05 m";
+  d = ToMapperDiagnosticStatus(h, "n", "n");
+  EXPECT_EQ(d.level, diagnostic_msgs::DiagnosticStatus::OK);
+  EXPECT_EQ(d.message, "mapping");
+  const auto value = [&d](const std::string& key) {
+    for (const auto& kv : d.values) {
+      if (kv.key == key) return kv.value;
+    }
+    return std::string("(missing)");
+  };
+  EXPECT_EQ(value("scans processed"), "42");
+  EXPECT_EQ(value("scan rate (Hz)"), "10.0");
+  EXPECT_EQ(value("map"), "310 x 40 at 0.05 m");
+  h.scans_dropped = 3;
+  h.last_drop = "/scan: no tf odom -> laser";
+  d = ToMapperDiagnosticStatus(h, "n", "n");
+  EXPECT_EQ(d.message, "mapping; last scan dropped: /scan: no tf odom -> laser");
+  EXPECT_EQ(value("scans dropped"), "3");
+  h.scan_age_s = 2.5;  // past scan_timeout_s: the laser or tf is gone
+  EXPECT_EQ(ToMapperDiagnosticStatus(h, "n", "n").level, diagnostic_msgs::DiagnosticStatus::WARN);
+  h.error = "TextSlam: boom";
+  d = ToMapperDiagnosticStatus(h, "n", "n");
+  EXPECT_EQ(d.level, diagnostic_msgs::DiagnosticStatus::ERROR);
+  EXPECT_EQ(d.message.rfind("error: TextSlam: boom", 0), 0u);
+}
+
 }  // namespace
 }  // namespace doorplate_localization

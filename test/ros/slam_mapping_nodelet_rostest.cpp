@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/GetMap.h>
 #include <nav_msgs/OccupancyGrid.h>
@@ -204,6 +205,38 @@ TEST(SlamMappingNodelet, MapsTheCorridorReadsAPlateAnswersServicesAndSavesLoadab
   EXPECT_GE(text_map.landmarks.size(), 1u);
   EXPECT_EQ(text_map.occupancy_map, "map.yaml");
   EXPECT_EQ(text_map.frame_id, "map");
+}
+
+// Issue 18: the mapper's condition on /diagnostics, as the localizer's ("mapping" while it takes scans).
+TEST(SlamMappingNodelet, PublishesItsHealthOnDiagnostics) {
+  ros::NodeHandle nh;
+  diagnostic_msgs::DiagnosticStatus status;
+  bool seen = false;
+  ros::Subscriber sub = nh.subscribe<diagnostic_msgs::DiagnosticArray>(
+      "/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& m) {
+        for (const auto& s : m->status) {
+          if (s.name == "/slam_mapping: mapping") {
+            status = s;
+            seen = true;
+          }
+        }
+      });
+  const auto value = [&status](const std::string& key) {
+    for (const auto& kv : status.values) {
+      if (kv.key == key) return kv.value;
+    }
+    return std::string("(missing)");
+  };
+  ASSERT_TRUE(WaitFor([&] {
+    return seen && status.level == diagnostic_msgs::DiagnosticStatus::OK && value("scan rate (Hz)") != "0.0" &&
+           value("map") != "none yet";
+  }, 60.0)) << "no healthy /slam_mapping diagnostics: " << status.message;
+  EXPECT_EQ(status.message.rfind("mapping", 0), 0u) << status.message;
+  EXPECT_GT(std::stod(value("scan rate (Hz)")), 1.0);
+  EXPECT_GT(std::stoi(value("scans processed")), 0);
+  EXPECT_EQ(std::stoi(value("particles")), 20);  // the launch file's ~particles
+  EXPECT_NE(value("map").find(" x "), std::string::npos) << value("map");
+  EXPECT_EQ(value("last error"), "none");
 }
 
 }  // namespace

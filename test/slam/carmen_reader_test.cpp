@@ -98,6 +98,19 @@ TEST(ReadCarmenLog, ALineMissingOneBeamIsBlamedOnTheBeamCount) {
   EXPECT_NE(error.find("got 13: does the number of ranges match the beam count?"), std::string::npos) << error;
 }
 
+// Finite but absurd (issue 18): a pose shifted by 1e15 m made the SLAM allocate until std::bad_alloc, and a
+// range of 1e308 does not fit the float it is stored in.
+TEST(ReadCarmenLog, RefusesPosesBeyondTheCoordinateLimitAndRangesNoFloatHolds) {
+  const std::string shifted = ErrorOf("FLASER 2 1 2 0 0 0 1e15 0 0\n");
+  EXPECT_NE(shifted.find("x.log:1: odometry pose x: must be finite and within +-1e+06 m (limits::kMaxCoordinateM), "
+                         "got 1e+15"), std::string::npos) << shifted;
+  EXPECT_NE(ErrorOf("# c\nFLASER 2 1 2 0 -2e6 0 0 0 0\n").find("x.log:2: laser pose y: "), std::string::npos);
+  const std::string huge = ErrorOf("FLASER 2 1 1e308 0 0 0 0 0 0\n");
+  EXPECT_NE(huge.find("x.log:1: range 1: 1e308 does not fit a float range"), std::string::npos) << huge;
+  std::istringstream at_the_limit("FLASER 2 1 2 1e6 -1e6 0 1e6 -1e6 0\n");
+  EXPECT_EQ(ReadCarmenLog(at_the_limit, "x.log").scans.size(), 1u);
+}
+
 TEST(ReadCarmenLogFile, AMissingFileIsAnErrorNamingIt) {
   try {
     ReadCarmenLogFile("/nonexistent/x.log");

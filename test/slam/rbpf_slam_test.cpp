@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "doorplate_localization/common/limits.h"
 #include "doorplate_localization/slam/carmen_reader.h"
 #include "slam_test_worlds.h"
 
@@ -182,6 +183,21 @@ TEST(RbpfSlam, RejectsOptionsItCannotRun) {
   o = RbpfSlamOptions{};
   o.likelihood_gain = 0.0;
   EXPECT_THROW(RbpfSlam{o}, std::invalid_argument);
+}
+
+// doorplate_map_log --particles 1e9 ended in std::bad_alloc (issue 18): refused by name with the limit.
+TEST(RbpfSlam, RefusesMoreParticlesThanTheLimitNamingIt) {
+  RbpfSlamOptions o;
+  o.num_particles = 1'000'000'000;
+  try {
+    RbpfSlam slam(o);
+    FAIL() << "accepted 1e9 particles";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "RbpfSlamOptions.num_particles: must be in [1, 1000000] (limits::kMaxParticles), got "
+                           "1000000000");
+  }
+  o.num_particles = limits::kMaxParticles;
+  EXPECT_NO_THROW(RbpfSlam{o});
 }
 
 TEST(RbpfSlam, RejectsAScanWithoutGeometry) {

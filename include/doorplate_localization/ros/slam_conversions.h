@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include <diagnostic_msgs/DiagnosticStatus.h>
 #include <geometry_msgs/Transform.h>
 #include <ros/time.h>
 #include <sensor_msgs/LaserScan.h>
@@ -75,6 +76,32 @@ std::string PrepareSlamScan(const sensor_msgs::LaserScan& msg, const TransformLo
 std::string PrepareSlamSightings(const TextDetectionArray& msg, const TransformLookup& lookup,
                                  const SlamInputFrames& frames, std::vector<PlateSighting>* sightings,
                                  Pose2D* odometry_pose, std::vector<std::string>* rejected);
+
+// What SlamMappingNodelet knows about its own condition, for /diagnostics (issue 18).
+struct MapperHealth {
+  double scan_age_s = -1.0;        // ROS time since the session last took a scan; < 0: none yet
+  double scan_timeout_s = 2.0;     // older than this: waiting_for_scan (laser or tf gone)
+  double scan_rate_hz = 0.0;       // scans the session took per second over the last diagnostics period
+  long long scans_dropped = 0;     // since the start: broken, without tf, stamp not after the previous one
+  std::string last_drop;           // why the last one was dropped ("" none)
+  int scans_processed = 0;         // by the filter (after throttling and the update thresholds)
+  int particles = 0;
+  double neff = 0.0;               // the filter's last effective sample size
+  int landmarks = 0;
+  long long plates_used = 0, plates_ignored = 0;
+  std::string map;                 // the last published map, "W x H at R m"; "" none yet
+  std::string error;               // the last unexpected exception of a callback ("" none)
+};
+
+// "error: <what>", "waiting_for_scan" (no scan taken yet, or none for scan_timeout_s) or "mapping".
+std::string MapperStateText(const MapperHealth& health);
+
+// /diagnostics entry: level OK for mapping, WARN for waiting_for_scan, ERROR for error; message = the
+// state, plus "; last scan dropped: <why>" while scans are dropped; values: state, scan rate, last scan
+// age, scans processed, scans dropped, last drop, particles, neff, landmarks, plates used / ignored, map,
+// last error.
+diagnostic_msgs::DiagnosticStatus ToMapperDiagnosticStatus(const MapperHealth& health, const std::string& name,
+                                                           const std::string& hardware_id);
 
 // gmapping's ~entropy: the entropy of the particle poses as one weighted Gaussian (x, y, theta),
 // ½ ln((2πe)³ det Σ), nats; weights from the particles' log-weights. Lower = more concentrated.

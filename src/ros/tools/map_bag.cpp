@@ -24,8 +24,9 @@
 #include <tf2/exceptions.h>
 #include <tf2_msgs/TFMessage.h>
 
-#include "cli_args.h"
+#include "cli_app.h"
 #include "map_tool_output.h"
+#include "output_guard.h"
 #include "doorplate_localization/TextDetectionArray.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/maps/text_map.h"
@@ -39,20 +40,17 @@ using tools::UsageError;
 
 namespace {
 
-const char kUsage[] =
-    "usage: doorplate_map_bag BAG --out-dir DIR [--seed S] [--set NAME=VALUE]...\n"
-    "         [--scan-topic /scan] [--detections-topic /text_detections] [--no-text]\n"
-    "         [--odom-frame odom] [--base-frame base_link] [--map-frame map] [--map-name map]\n"
-    "         [--max-range-m R] [--min-valid-beams N] [--progress-s SECONDS]\n"
-    "  --set changes any SLAM option by its name in the one option table (TextSlamOptionNames(): e.g.\n"
-    "  num_particles, linear_update_m, matcher.field_sigma_m, text.plate_sigma_m); the mapping nodelet\n"
-    "  takes the same names as parameters (with / for .). --max-range-m: readings at or beyond it are\n"
-    "  no-echo (the nodelet's ~maxRange; 0 = the scan's range_max).\n";
+const char kDescription[] = "Maps a rosbag offline through the mapping nodelet's session, options and conversions.";
+const char kNotes[] =
+    "--set changes any SLAM option by its name in the one option table (TextSlamOptionNames(): e.g.\n"
+    "num_particles, linear_update_m, matcher.field_sigma_m, text.plate_sigma_m); the mapping nodelet\n"
+    "takes the same names as parameters (with / for .).";
 
 struct Args {
   std::string bag, out_dir, scan_topic = "/scan", detections_topic = "/text_detections", map_frame = "map";
   std::string map_name = "map";
-  bool use_text = true;
+  std::vector<std::string> sets;
+  bool no_text = false;
   double progress_s = 5.0;
   dl::SlamInputFrames frames;
   dl::MappingSessionOptions options;
@@ -68,47 +66,35 @@ std::vector<std::string> BothSpellings(const std::vector<std::string>& topics) {
   return both;
 }
 
-Args ParseArgs(int argc, char** argv) {
-  Args args;
-  for (int i = 1; i < argc; ++i) {
-    const std::string option = argv[i];
-    tools::ExitIfHelp(option, kUsage);
-    if (option == "--no-text") {
-      args.use_text = false;
-      continue;
+void AddOptions(CLI::App* app, Args* args) {
+  app->footer(kNotes);
+  app->add_option("BAG", args->bag, "the rosbag")->required();
+  app->add_option("--out-dir", args->out_dir, "output folder DIR")->required();
+  app->add_option("--seed", args->options.slam.slam.seed, "filter seed")->capture_default_str()->transform(tools::Seed());
+  app->add_option("--set", args->sets, "NAME=VALUE: a SLAM option (repeatable)")->allow_extra_args(false);
+  app->add_option("--scan-topic", args->scan_topic, "laser scans")->capture_default_str();
+  app->add_option("--detections-topic", args->detections_topic, "text detections")->capture_default_str();
+  app->add_flag("--no-text", args->no_text, "laser only: ignore the text detections");
+  app->add_option("--odom-frame", args->frames.odom_frame, "odometry frame")->capture_default_str();
+  app->add_option("--base-frame", args->frames.base_frame, "robot frame")->capture_default_str();
+  app->add_option("--map-frame", args->map_frame, "map frame")->capture_default_str();
+  app->add_option("--map-name", args->map_name, "file name of the maps, without '/'")->capture_default_str();
+  app->add_option("--max-range-m", args->frames.max_range_m, "readings at or beyond it are no-echo (the nodelet's "
+                  "~maxRange; 0 = the scan's range_max)")->capture_default_str()->check(tools::Number(0.0));
+  app->add_option("--min-valid-beams", args->frames.min_valid_beams, "a scan with fewer valid beams is dropped")
+      ->capture_default_str()->transform(tools::WholeNumber(0));
+  app->add_option("--progress-s", args->progress_s, "a progress line on stderr every this many seconds")
+      ->capture_default_str()->check(tools::Number());
+  app->callback([args] {
+    args->scan_topic = Topic(args->scan_topic);
+    args->detections_topic = Topic(args->detections_topic);
+    for (const std::string& set : args->sets) {
+      tools::ApplySetOption(set, [&](const std::string& name, double v) { dl::SetTextSlamOption(name, v, &args->options.slam); });
     }
-    if (option.rfind("--", 0) != 0) {
-      if (!args.bag.empty()) throw UsageError("more than one bag: '" + args.bag + "' and '" + option + "'");
-      args.bag = option;
-      continue;
+    if (args->map_name.empty() || args->map_name.find('/') != std::string::npos) {
+      throw UsageError("--map-name must be a file name without '/'");
     }
-    const std::string value = tools::TakeValue(argc, argv, &i);
-    if (option == "--out-dir") args.out_dir = value;
-    else if (option == "--scan-topic") args.scan_topic = Topic(value);
-    else if (option == "--detections-topic") args.detections_topic = Topic(value);
-    else if (option == "--odom-frame") args.frames.odom_frame = value;
-    else if (option == "--base-frame") args.frames.base_frame = value;
-    else if (option == "--map-frame") args.map_frame = value;
-    else if (option == "--map-name") args.map_name = value;
-    else if (option == "--progress-s") args.progress_s = tools::ParseNumber(option, value);
-    else if (option == "--max-range-m") args.frames.max_range_m = tools::ParseNumber(option, value);
-    else if (option == "--seed")
-      args.options.slam.slam.seed = static_cast<std::uint64_t>(tools::ParseWholeNumber(option, value, 0));
-    else if (option == "--min-valid-beams")
-      args.frames.min_valid_beams = static_cast<int>(tools::ParseWholeNumber(option, value, 0));
-    else if (option == "--set") {
-      tools::ApplySetOption(value,
-                            [&](const std::string& name, double v) { dl::SetTextSlamOption(name, v, &args.options.slam); });
-    } else {
-      throw UsageError("unknown option '" + option + "'");
-    }
-  }
-  if (args.bag.empty() || args.out_dir.empty()) throw UsageError("a BAG and --out-dir are required");
-  if (args.map_name.empty() || args.map_name.find('/') != std::string::npos) {
-    throw UsageError("--map-name must be a file name without '/'");
-  }
-  if (args.frames.max_range_m < 0) throw UsageError("--max-range-m must be >= 0");
-  return args;
+  });
 }
 
 // Every /tf and /tf_static transform of the bag, kept for the whole bag's span.
@@ -136,8 +122,13 @@ void Warn(long* count, const std::string& topic, const std::string& problem) {
   if (++*count <= 5) std::fprintf(stderr, "doorplate_map_bag: %s: %s; dropping it\n", topic.c_str(), problem.c_str());
 }
 
-int Run(const Args& args) {
+int MapBag(const Args& args) {
   const tools::Stopwatch clock;
+  const std::string base = args.out_dir + "/" + args.map_name;
+  tools::RefuseOverwritingInputs({{"BAG", args.bag}},
+                                 {{"--out-dir", base + ".pgm"}, {"--out-dir", base + ".yaml"},
+                                  {"--out-dir", base + ".text_map.yaml"}, {"--out-dir", args.out_dir + "/trajectory.txt"}});
+  dl::MappingSession session(args.options);           // bad options (--set num_particles=1e9) before the bag
   std::filesystem::create_directories(args.out_dir);  // fails early, before a long run, if it cannot
   rosbag::Bag bag(args.bag, rosbag::bagmode::Read);   // throws rosbag::BagException naming the problem
   const std::unique_ptr<tf2::BufferCore> tf = LoadTf(bag);
@@ -153,10 +144,9 @@ int Run(const Args& args) {
   };
 
   std::vector<std::string> topics{args.scan_topic};
-  if (args.use_text) topics.push_back(args.detections_topic);
+  if (!args.no_text) topics.push_back(args.detections_topic);
   rosbag::View view(bag, rosbag::TopicQuery(BothSpellings(topics)));
   const std::size_t total = view.size();
-  dl::MappingSession session(args.options);
   const dl::RbpfSlam& filter = session.slam().slam();
   Counters n;
   std::size_t done = 0;
@@ -203,7 +193,6 @@ int Run(const Args& args) {
     throw std::runtime_error(args.bag + ": no usable scan on " + args.scan_topic + " (" + std::to_string(n.scans) +
                              " messages, " + std::to_string(n.scans_dropped) + " dropped); nothing written");
   }
-  const std::string base = args.out_dir + "/" + args.map_name;
   session.Solve();
   dl::TextMap text_map = session.GetTextMap();
   text_map.frame_id = args.map_frame;
@@ -219,7 +208,19 @@ int Run(const Args& args) {
   return 0;
 }
 
+// rosbag's errors (rosbag::BagException "Error reading version line", a message that does not deserialize)
+// do not name the bag: they are rethrown with its path.
+int Run(const Args& args) {
+  try {
+    return MapBag(args);
+  } catch (const ros::Exception& e) {
+    throw std::runtime_error(args.bag + ": not a readable bag: " + e.what());
+  }
+}
+
 }  // namespace
 
 // rosbag::BagException, bad options, write errors: all name the file (exit status 1).
-int main(int argc, char** argv) { return tools::RunTool("doorplate_map_bag", kUsage, ParseArgs, Run, argc, argv); }
+int main(int argc, char** argv) {
+  return tools::RunTool("doorplate_map_bag", kDescription, AddOptions, Run, argc, argv);
+}

@@ -15,7 +15,6 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -23,6 +22,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "cli_app.h"
 #include "doorplate_localization/common/room_id.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/maps/text_map.h"
@@ -43,19 +43,15 @@ struct Args {
   std::string world, maps, mapping_bag, localization_bag, room, out, particle_spread, title = "Simulated mission";
 };
 
-bool ParseArgs(int argc, char** argv, Args* a) {
-  const std::map<std::string, std::string*> fields{
-      {"--world", &a->world}, {"--maps", &a->maps}, {"--mapping-bag", &a->mapping_bag},
-      {"--localization-bag", &a->localization_bag}, {"--room", &a->room}, {"--out", &a->out},
-      {"--particle-spread", &a->particle_spread}, {"--title", &a->title}};
-  if (argc % 2 == 0) return false;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const auto it = fields.find(argv[i]);
-    if (it == fields.end()) return false;
-    *it->second = argv[i + 1];
-  }
-  return !(a->world.empty() || a->maps.empty() || a->mapping_bag.empty() || a->localization_bag.empty() ||
-           a->room.empty() || a->out.empty());
+void AddOptions(CLI::App* app, Args* a) {
+  app->add_option("--world", a->world, "the world file of the mission")->required();
+  app->add_option("--maps", a->maps, "folder of the saved maps (map.yaml, map.text_map.yaml)")->required();
+  app->add_option("--mapping-bag", a->mapping_bag, "bag of the mapping run")->required();
+  app->add_option("--localization-bag", a->localization_bag, "bag of the localization and go-to-room run")->required();
+  app->add_option("--room", a->room, "the room the robot was sent to")->required();
+  app->add_option("--out", a->out, "folder of report.md and its pictures")->required();
+  app->add_option("--particle-spread", a->particle_spread, "the particle spread log of scripts/mission_progress.py");
+  app->add_option("--title", a->title, "the report's title")->capture_default_str();
 }
 
 // The first time a status/state text starts with `prefix`, or a negative number if never.
@@ -121,20 +117,13 @@ std::string ExtentRows(const std::vector<dl::CorridorAccuracy>& corridors, const
 }
 
 int main(int argc, char** argv) {
-  const char* usage =
-      "usage: doorplate_mission_report --world W.yaml --maps DIR --mapping-bag B1 --localization-bag B2"
-      " --room R --out DIR [--particle-spread CSV] [--title TEXT]\n";
-  for (int i = 1; i < argc; ++i) {
-    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-      std::cout << usage;
-      return 0;
-    }
-  }
+  CLI::App app("The report of a simulated mission (scripts/demo.sh) from its two bags, the world and the saved maps.",
+               "doorplate_mission_report");
+  dl::tools::UseToolConventions(&app);
   Args args;
-  if (!ParseArgs(argc, argv, &args)) {
-    std::cerr << usage;
-    return 2;
-  }
+  AddOptions(&app, &args);
+  const int parsed = dl::tools::ParseCommandLine(&app, argc, argv);
+  if (parsed >= 0) return parsed;
   try {
     const dl::World world = dl::LoadWorldFile(args.world);
     const dl::TextMap truth_plates = dl::GroundTruthTextMap(world);
