@@ -5,6 +5,7 @@ add_library(doorplate_localization_nodelet
   src/ros/amcl_conversions.cpp
   src/ros/text_amcl_options.cpp
   src/ros/text_amcl_building.cpp
+  src/ros/scan_tf_filter.cpp
   src/ros/text_amcl_nodelet.cpp)
 target_include_directories(doorplate_localization_nodelet PUBLIC include PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(doorplate_localization_nodelet doorplate_ros_conversions doorplate_mcl doorplate_maps
@@ -22,6 +23,11 @@ if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(text_amcl_building_test test/ros/text_amcl_building_test.cpp)
   target_include_directories(text_amcl_building_test PRIVATE src/ros ${catkin_INCLUDE_DIRS})
   target_link_libraries(text_amcl_building_test doorplate_localization_nodelet GTest::gtest_main ${catkin_LIBRARIES})
+
+  # The scan input: broken scans refused, the others held until tf has them, drops described (no ROS master).
+  catkin_add_gtest(scan_tf_filter_test test/ros/scan_tf_filter_test.cpp)
+  target_include_directories(scan_tf_filter_test PRIVATE src/ros ${catkin_INCLUDE_DIRS})
+  target_link_libraries(scan_tf_filter_test doorplate_localization_nodelet GTest::gtest_main ${catkin_LIBRARIES})
 
   # Sim + wall follower + text extractor + Text AMCL in one manager: global localization in a symmetric
   # corridor converges to the true pose. The checker also tests LoadTextAmclOptions (needs a parameter server).

@@ -10,6 +10,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "doorplate_localization/common/limits.h"
+#include "doorplate_localization/ros/diagnostic_values.h"
 #include "doorplate_localization/ros/text_detection_conversions.h"
 
 namespace doorplate_localization {
@@ -135,24 +136,15 @@ diagnostic_msgs::DiagnosticStatus ToDiagnosticStatus(const LocalizerHealth& h, c
   }
   d.message = state;
   if (h.global_localization_queued) d.message += " (global_localization queued until a map is in force)";
-  const auto add = [&d](const std::string& key, const std::string& value) {
-    diagnostic_msgs::KeyValue kv;
-    kv.key = key;
-    kv.value = value;
-    d.values.push_back(kv);
-  };
-  const auto number = [](double v, int precision) {
-    std::ostringstream out;
-    out.setf(std::ios::fixed);
-    out.precision(precision);
-    out << v;
-    return out.str();
-  };
+  const auto add = [&d](const std::string& key, const std::string& value) { AddDiagnosticValue(&d, key, value); };
+  const auto number = FixedDecimals;
   add("state", state);
   add("map in force", h.map_in_force ? h.map : "none");
   add("global localization queued", h.global_localization_queued ? "yes" : "no");
   add("scan rate (Hz)", number(h.scan_rate_hz, 1));
   add("last scan age (s)", h.scan_age_s < 0.0 ? "none since the (re)start" : number(h.scan_age_s, 2));
+  add("scans dropped", std::to_string(h.scans_dropped));
+  add("last scan dropped", h.last_scan_dropped.empty() ? "none" : limits::TruncateForLog(h.last_scan_dropped, 200));
   add("odometry tf age (s)", h.tf_age_s < 0.0 ? "no transform" : number(h.tf_age_s, 2));
   add("particles", std::to_string(h.status.particle_count));
   add("best cluster weight", number(h.status.best_cluster_weight, 3));

@@ -10,6 +10,7 @@
 #include <tf2/LinearMath/Vector3.h>
 
 #include "doorplate_localization/common/limits.h"
+#include "doorplate_localization/ros/diagnostic_values.h"
 #include "doorplate_localization/ros/scan_conversions.h"
 #include "doorplate_localization/ros/text_detection_conversions.h"
 
@@ -203,19 +204,8 @@ diagnostic_msgs::DiagnosticStatus ToMapperDiagnosticStatus(const MapperHealth& h
                                                : diagnostic_msgs::DiagnosticStatus::WARN;
   d.message = state;
   if (!h.last_drop.empty()) d.message += "; last scan dropped: " + limits::TruncateForLog(h.last_drop, 200);
-  const auto add = [&d](const std::string& key, const std::string& value) {
-    diagnostic_msgs::KeyValue kv;
-    kv.key = key;
-    kv.value = value;
-    d.values.push_back(kv);
-  };
-  const auto number = [](double v, int precision) {
-    std::ostringstream out;
-    out.setf(std::ios::fixed);
-    out.precision(precision);
-    out << v;
-    return out.str();
-  };
+  const auto add = [&d](const std::string& key, const std::string& value) { AddDiagnosticValue(&d, key, value); };
+  const auto number = FixedDecimals;
   add("state", state);
   add("scan rate (Hz)", number(h.scan_rate_hz, 1));
   add("last scan age (s)", h.scan_age_s < 0.0 ? "none yet" : number(h.scan_age_s, 2));

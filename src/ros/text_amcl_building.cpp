@@ -177,6 +177,11 @@ void LocalizerCore::ScanTaken(double now_s) {
 
 void LocalizerCore::Failed(const std::string& what) { error_ = what.empty() ? "unknown exception" : what; }
 
+void LocalizerCore::ScanDropped(const std::string& why) {
+  ++scans_dropped_;
+  last_scan_dropped_ = why;
+}
+
 LocalizerHealth LocalizerCore::Health(double now_s) const {
   LocalizerHealth h;
   h.map_in_force = session_ != nullptr;
@@ -185,6 +190,8 @@ LocalizerHealth LocalizerCore::Health(double now_s) const {
   h.error = error_;
   h.scan_age_s = last_scan_s_ ? std::max(0.0, now_s - *last_scan_s_) : -1.0;
   h.scan_timeout_s = options_.scan_timeout_s;
+  h.scans_dropped = scans_dropped_;
+  h.last_scan_dropped = last_scan_dropped_;
   if (session_) {
     h.status = session_->Status();
     const TextAmclSessionCounters& c = session_->session().counters();

@@ -108,6 +108,8 @@ class LocalizerCore {
   // The nodelet took a scan into the session at `now_s` (clears an error), or the session threw `what`.
   void ScanTaken(double now_s);
   void Failed(const std::string& what);
+  // A scan was not taken (broken, no tf, dropped waiting for tf): counted, `why` kept as the last (Health).
+  void ScanDropped(const std::string& why);
 
   bool has_session() const { return session_ != nullptr; }
   BuildingSession& session() { return *session_; }  // requires has_session()
@@ -128,6 +130,8 @@ class LocalizerCore {
   std::string map_;
   std::string error_;
   std::optional<double> last_scan_s_;
+  long long scans_dropped_ = 0;
+  std::string last_scan_dropped_;
 };
 
 }  // namespace doorplate_localization

@@ -8,17 +8,17 @@
 // also latches that floor's grid on map when the nodelet owns the map, and its plates on text_landmarks),
 // text_landmarks, all latched, and tf global_frame -> odom_frame stamped scan stamp + ~transform_tolerance. Services: global_localization (the floor becomes unknown too;
 // queued until a map is in force), request_nomotion_update, set_map (refused with ~building_file; always
-// starts at its initial_pose). Odometry: tf odom_frame -> base_frame at each scan's and detection array's
-// stamp. Parameters: text_amcl_options.h. mutex_ guards the core.
+// starts at its initial_pose). Odometry: tf odom_frame -> base_frame at each scan's stamp (scans wait for it in
+// a tf2 message filter, scan_tf_filter.h, as amcl's) and detection array's. Parameters: text_amcl_options.h.
 //
 // Requests go through LocalizerCore (text_amcl_building.h): a refused map (set_map, the map topic,
 // static_map) leaves the session, the latched map and ~state as they were, and set_map answers success
 // false with the reason logged. ~state is LocalizerCore's (waiting_for_map | waiting_for_scan | tracking |
 // converged | lost: <reason> | error: <what>): converged only while scans are being taken and estimates
 // published. /diagnostics (diagnostic_msgs/DiagnosticArray, 1 Hz ROS time): state, map in force, scan rate,
-// odometry tf age, plates used, the last error (amcl_conversions.h's ToDiagnosticStatus). amcl_pose is
+// scans dropped, odometry tf age, plates used, the last error (amcl_conversions.h's ToDiagnosticStatus). amcl_pose is
 // published after filter updates (scans, plates), not at a (re)start, as amcl; its covariance is the whole
-// particle set's (amcl's).
+// particle set's (amcl's). mutex_ guards the core.
 // Over 400 lines: one callback per amcl interface (3 services, 4 subscriptions, 3 timers) and their logging;
 // the rules live in LocalizerCore and the message conversions, which have their own tests.
 #include <algorithm>
@@ -47,9 +47,9 @@
 #include "doorplate_localization/ros/amcl_conversions.h"
 #include "doorplate_localization/ros/map_conversions.h"
 #include "doorplate_localization/ros/pose_conversions.h"
-#include "doorplate_localization/ros/scan_conversions.h"
 #include "doorplate_localization/ros/text_detection_conversions.h"
 #include "doorplate_localization/ros/tf_lookup.h"
+#include "scan_tf_filter.h"
 #include "text_amcl_building.h"
 #include "text_amcl_options.h"
 
@@ -107,7 +107,12 @@ class TextAmclNodelet : public nodelet::Nodelet {
       map_timer_ = nh.createWallTimer(ros::WallDuration(1.0), &TextAmclNodelet::RequestStaticMap, this);
     }
     initial_pose_sub_ = nh.subscribe("initialpose", 2, &TextAmclNodelet::OnInitialPose, this);
-    scan_sub_ = nh.subscribe("scan", 1, &TextAmclNodelet::OnScan, this);
+    scan_filter_ = std::make_unique<ScanTfFilter>(tf_buffer_, options_.odom_frame_id, kScanTfQueueSize,
+        nh.getCallbackQueue(), [this](const auto& m) { OnScan(m); }, [this](const auto&, const auto& why, bool broken) {
+          std::lock_guard<std::mutex> lock(mutex_);
+          ScanDropped(why, broken);
+        });
+    scan_filter_->Subscribe(nh, "scan");
     detections_sub_ = nh.subscribe("text_detections", kTextDetectionsQueueSize, &TextAmclNodelet::OnDetections, this);
     if (options_.save_pose_rate_hz > 0.0) {
       save_timer_ = nh.createTimer(ros::Duration(1.0 / options_.save_pose_rate_hz), &TextAmclNodelet::SavePose, this);
@@ -274,41 +279,34 @@ class TextAmclNodelet : public nodelet::Nodelet {
     PublishRestart();
   }
 
-  // validate -> tf (laser mount, odometry) -> convert -> session -> publish.
+  // A scan not taken: a throttled error (broken) or warning naming the topic, counted. Requires mutex_.
+  void ScanDropped(const std::string& why, bool broken) {
+    core_->ScanDropped(why);
+    if (broken) NODELET_ERROR_THROTTLE(2.0, "%s: %s; scan ignored", scan_filter_->topic().c_str(), why.c_str());
+    else NODELET_WARN_THROTTLE(2.0, "%s: %s; scan ignored", scan_filter_->topic().c_str(), why.c_str());
+  }
+
+  // A valid scan whose odometry tf has (scan_filter_) -> tf (laser mount, odometry) -> convert -> session -> publish.
   void OnScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
-    const std::string& topic = scan_sub_.getTopic();
-    const std::string problem = ValidateScan(*msg);
-    if (!problem.empty()) {
-      NODELET_ERROR_THROTTLE(2.0, "%s: %s; scan ignored", topic.c_str(), problem.c_str());
-      return;
-    }
+    const std::string& topic = scan_filter_->topic();
     if (!core_->has_session()) {
       NODELET_WARN_THROTTLE(10.0, "%s: no map yet; scan ignored", topic.c_str());
       return;
     }
     std::string tf_problem;
-    const std::optional<Pose2D> laser_in_base = LookupPlanarPose(tf_buffer_, options_.base_frame_id,
-                                                                 msg->header.frame_id, ros::Time(0),
-                                                                 options_.tf_timeout_s, &tf_problem);
-    const std::optional<Pose2D> base_in_odom =
-        laser_in_base ? LookupPlanarPose(tf_buffer_, options_.odom_frame_id, options_.base_frame_id,
-                                         msg->header.stamp, options_.tf_timeout_s, &tf_problem)
-                      : std::nullopt;
-    if (!base_in_odom) {
-      NODELET_WARN_THROTTLE(2.0, "%s: %s; scan ignored", topic.c_str(), tf_problem.c_str());
-      return;
-    }
+    const std::optional<ScanPoses> tf =
+        LookupScanPoses(tf_buffer_, options_.odom_frame_id, options_.base_frame_id, *msg, &tf_problem);
+    if (!tf) return ScanDropped(tf_problem, /*broken=*/false);
     BuildingSession& session = core_->session();
     SessionUpdate update;
     try {
-      update = session.AddScan(msg->header.stamp.toSec(), *base_in_odom, ToLocalizationScan(*msg, *laser_in_base));
+      update = session.AddScan(msg->header.stamp.toSec(), tf->base_in_odom,
+                               ToLocalizationScan(*msg, tf->laser_in_base));
     } catch (const std::invalid_argument& e) {  // the scan (nothing changed)
-      NODELET_ERROR_THROTTLE(2.0, "%s: %s; scan ignored", topic.c_str(), e.what());
-      return;
+      return ScanDropped(e.what(), /*broken=*/true);
     } catch (const std::exception& e) {  // the session: no estimate until it takes a scan again
-      Failed(topic, e.what());
-      return;
+      return Failed(topic, e.what());
     }
     core_->ScanTaken(ros::Time::now().toSec());
     ++scans_since_health_;
@@ -495,7 +493,8 @@ class TextAmclNodelet : public nodelet::Nodelet {
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   std::unique_ptr<tf2_ros::TransformBroadcaster> tf_broadcaster_;
   ros::Publisher pose_pub_, cloud_pub_, markers_pub_, state_pub_, floor_pub_, map_pub_, diagnostics_pub_;
-  ros::Subscriber scan_sub_, initial_pose_sub_, detections_sub_, map_sub_;
+  std::unique_ptr<ScanTfFilter> scan_filter_;  // after tf_buffer_: destroyed before it
+  ros::Subscriber initial_pose_sub_, detections_sub_, map_sub_;
   ros::ServiceServer global_srv_, nomotion_srv_, set_map_srv_;
   ros::WallTimer map_timer_;
   ros::Timer save_timer_, health_timer_;

@@ -155,7 +155,8 @@ const ParamTable<O>& TextAmclParamTable() {
                "latched on `map`; unusable: the nodelet does not start, naming the file"),
       Param<O>("start_with_global_localization", DOORPLATE_PARAM_FIELD(session.start_with_global_localization),
                "(ours) on a new map, spread the particles over the free space instead of `~initial_pose_*`"),
-      Param<O>("tf_timeout_s", DOORPLATE_PARAM_FIELD(tf_timeout_s), "(ours) how long a callback waits for a transform",
+      Param<O>("tf_timeout_s", DOORPLATE_PARAM_FIELD(tf_timeout_s),
+               "(ours) how long a text_detections callback waits for a transform (scans wait in a tf filter instead)",
                r::NonNegative())
           .Deprecated("tf_timeout"),
       Param<O>("scan_timeout_s", DOORPLATE_PARAM_FIELD(scan_timeout_s),

@@ -277,6 +277,14 @@ TEST(ToDiagnosticStatus, GivesTheLevelTheStateAndTheFiguresAUserChecks) {
   EXPECT_EQ(value("particles"), "500");
   EXPECT_EQ(value("plates used"), "3");
   EXPECT_EQ(value("last error"), "none");
+  EXPECT_EQ(value("scans dropped"), "0");
+  EXPECT_EQ(value("last scan dropped"), "none");
+  h.scans_dropped = 3;
+  h.last_scan_dropped = "no tf from 'laser' to 'odom' at the scan's stamp 2.000 s: older than tf's cache holds";
+  d = ToDiagnosticStatus(h, "n", "h");
+  EXPECT_EQ(d.level, diagnostic_msgs::DiagnosticStatus::OK) << "drops alone: ~state says when scans stop";
+  EXPECT_EQ(value("scans dropped"), "3");
+  EXPECT_EQ(value("last scan dropped"), h.last_scan_dropped);
   h.map_in_force = false;
   h.global_localization_queued = true;
   d = ToDiagnosticStatus(h, "n", "h");

@@ -277,5 +277,21 @@ TEST(LocalizerCore, StateWaitsForScansAfterEveryRestartGoesStaleAndReportsErrors
   EXPECT_EQ(core.State(12.9), "waiting_for_scan");
 }
 
+TEST(LocalizerCore, CountsTheScansDroppedAcrossRestartsAndKeepsTheLastReason) {
+  LocalizerCore core(AtAPose(), nullptr);
+  EXPECT_EQ(core.Health(1.0).scans_dropped, 0);
+  EXPECT_EQ(core.Health(1.0).last_scan_dropped, "");
+  core.ScanDropped("header.frame_id is empty");  // before any map: still counted
+  ASSERT_TRUE(core.UseMaps(Room("", true), "/map").used);
+  core.ScanDropped("no tf from 'laser' to 'odom' at the scan's stamp 2.000 s: older than tf's cache holds");
+  core.ScanTaken(3.0);
+  const LocalizerHealth h = core.Health(3.0);
+  EXPECT_EQ(h.scans_dropped, 2);
+  EXPECT_EQ(h.last_scan_dropped,
+            "no tf from 'laser' to 'odom' at the scan's stamp 2.000 s: older than tf's cache holds");
+  EXPECT_EQ(core.State(3.0), StateText(core.session().Status().state, core.session().Status().lost_reason))
+      << "drops alone do not change the state";
+}
+
 }  // namespace
 }  // namespace doorplate_localization

@@ -209,6 +209,14 @@ TEST(TextAmclNodelet, ReportsBadInputNamingTheTopicAndKeepsRunning) {
     scan.header.stamp = ros::Time::now() - ros::Duration(0.3);
     scan_pub.publish(scan);
   }));
+  // A frame tf never has: the scan waits in the tf filter until newer scans push it out, then is dropped.
+  sensor_msgs::LaserScan lost = scan;
+  lost.header.frame_id = "nowhere";
+  EXPECT_TRUE(WaitFor([] { return listener->Warned("/scan: no tf from 'nowhere' to 'odom'", "scan ignored"); },
+                      30.0, [&] {
+                        lost.header.stamp = ros::Time::now();
+                        scan_pub.publish(lost);
+                      }));
   geometry_msgs::PoseWithCovarianceStamped initial;
   initial.header.frame_id = "odom";
   initial.pose.pose.orientation.w = 1.0;
@@ -409,6 +417,7 @@ TEST(TextAmclNodelet, PublishesItsHealthOnDiagnostics) {
   EXPECT_GT(std::stod(value("scan rate (Hz)")), 1.0);
   EXPECT_NE(value("odometry tf age (s)"), "no transform");
   EXPECT_EQ(value("last error"), "none");
+  EXPECT_GT(std::stoll(value("scans dropped")), 0) << "the broken scans of ReportsBadInput... count";
 }
 
 // Issue 19 (an amcl habit): global_localization before the map has arrived is queued, and the first map

@@ -72,6 +72,8 @@ struct LocalizerHealth {
   double scan_timeout_s = 0.0;              // ~scan_timeout_s; <= 0: scans are never stale
   double scan_rate_hz = 0.0;                // scans taken per second over the last diagnostics period
   double tf_age_s = -1.0;                   // age of the latest odom -> base transform; < 0: none
+  long long scans_dropped = 0;              // scans not taken (broken, no tf, dropped waiting for tf), ever
+  std::string last_scan_dropped;            // why the last of them was ("" none)
   TextAmclStatus status;                    // the filter's (BuildingSession::Status)
   long long plates_weighed = 0, plates_used = 0, unknown_room_readings = 0;  // the current floor's session
 };
@@ -84,8 +86,8 @@ std::string NodeStateText(const LocalizerHealth& health);
 
 // /diagnostics entry (diagnostic_msgs, rqt_runtime_monitor): level OK for tracking / converged, WARN for
 // waiting_for_map / waiting_for_scan / lost, ERROR for error; message = NodeStateText; values: state, map in
-// force, global localization queued, scan rate, last scan age, odometry tf age, particles, best cluster
-// weight, position stddev, plates weighed / used, unknown room readings, last error.
+// force, global localization queued, scan rate, last scan age, scans dropped, last scan dropped, odometry tf
+// age, particles, best cluster weight, position stddev, plates weighed / used, unknown room readings, last error.
 diagnostic_msgs::DiagnosticStatus ToDiagnosticStatus(const LocalizerHealth& health, const std::string& name,
                                                      const std::string& hardware_id);
 
