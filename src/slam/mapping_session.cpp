@@ -2,6 +2,7 @@
 #include "doorplate_localization/slam/mapping_session.h"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -71,13 +72,28 @@ MappingUpdate MappingSession::AddScan(double stamp_s, const Pose2D& base_in_odom
   return update;
 }
 
-std::optional<double> MappingSession::RangeFor(double stamp_s, double bearing_rad) const {
+std::optional<double> MappingSession::RangeFor(double stamp_s, double bearing_rad, std::string* why) const {
   const TimedScan* nearest = nullptr;
   for (const TimedScan& s : scans_) {  // oldest first: `<=` keeps the newer on ties
     if (!nearest || std::abs(s.stamp_s - stamp_s) <= std::abs(nearest->stamp_s - stamp_s)) nearest = &s;
   }
-  if (!nearest || std::abs(nearest->stamp_s - stamp_s) > options_.plate_range_max_scan_age_s) return std::nullopt;
-  return PlateRangeAlongBearing(nearest->scan, bearing_rad, options_.slam.range_beam_window_rad);
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(2);
+  if (!nearest || std::abs(nearest->stamp_s - stamp_s) > options_.plate_range_max_scan_age_s) {
+    out << "no scan within " << options_.plate_range_max_scan_age_s << " s of the reading's stamp " << stamp_s << " s";
+    if (nearest) out << " (nearest " << nearest->stamp_s << " s, newest " << scans_.back().stamp_s << " s)";
+    *why = out.str();
+    return std::nullopt;
+  }
+  const std::optional<double> range =
+      PlateRangeAlongBearing(nearest->scan, bearing_rad, options_.slam.range_beam_window_rad);
+  if (!range) {
+    out << "no echo within " << options_.slam.range_beam_window_rad << " rad of the bearing " << bearing_rad
+        << " rad in the scan at " << nearest->stamp_s << " s";
+    *why = out.str();
+  }
+  return range;
 }
 
 MappingUpdate MappingSession::AddPlates(double stamp_s, const Pose2D& base_in_odom,
@@ -92,8 +108,12 @@ MappingUpdate MappingSession::AddPlates(double stamp_s, const Pose2D& base_in_od
     MappingPlateOutcome outcome;
     outcome.stamp_s = stamp_s;
     outcome.sighting = given;
-    if (!given.range_m) outcome.sighting.range_m = RangeFor(stamp_s, given.bearing_rad);
+    std::string no_range_why;
+    if (!given.range_m) outcome.sighting.range_m = RangeFor(stamp_s, given.bearing_rad, &no_range_why);
     outcome.result = slam_.AddPlate(outcome.sighting, base_in_odom);
+    if (outcome.result.outcome == PlateOutcome::kNoRange && !no_range_why.empty()) {
+      outcome.result.reason = "no range: " + no_range_why;
+    }
     if (outcome.result.used()) ++counters_.plates_used, used = true;
     update.plates.push_back(std::move(outcome));
   }

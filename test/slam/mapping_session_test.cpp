@@ -135,6 +135,16 @@ TEST(MappingSession, ASightingTakesItsRangeFromTheScanNearestItsStampEvenWhenItA
   // Read 5 s after the newest scan: no scan is close enough in time for a range.
   const MappingUpdate stale = session.AddPlates(6.0, {0, 0.5, 0}, {Sighting("205", -M_PI / 2)});
   EXPECT_EQ(stale.plates[0].result.outcome, PlateOutcome::kNoRange);
+  // ...and the reason says which rule failed, with the stamps (a scan late behind a solve vs. no echo).
+  EXPECT_NE(stale.plates[0].result.reason.find("no scan within 0.50 s of the reading's stamp 6.00 s (nearest 1.00 s"),
+            std::string::npos)
+      << stale.plates[0].result.reason;
+  // Read at 1.0 s looking straight up at nothing (an open side beyond the laser's range): no echo there.
+  MappingSession open_side(FewParticles(3));
+  open_side.AddScan(0.0, {0, 0, 0}, test::Scan({{{-3, -2}, {3, -2}}}, {0, 0, 0}));
+  const MappingUpdate no_echo = open_side.AddPlates(0.0, {0, 0, 0}, {Sighting("209", M_PI / 2)});
+  EXPECT_EQ(no_echo.plates[0].result.outcome, PlateOutcome::kNoRange);
+  EXPECT_NE(no_echo.plates[0].result.reason.find("no echo within"), std::string::npos) << no_echo.plates[0].result.reason;
   // A given range is kept.
   const MappingUpdate given = session.AddPlates(6.0, {0, 0.5, 0}, {Sighting("207", -M_PI / 2, 1.5)});
   EXPECT_EQ(*given.plates[0].sighting.range_m, 1.5);

@@ -129,7 +129,8 @@ class MappingSession {
     double stamp_s;
     RangeScan scan;
   };
-  std::optional<double> RangeFor(double stamp_s, double bearing_rad) const;
+  // nullopt with *why set (which of the two rules failed, with the stamps) when there is no range.
+  std::optional<double> RangeFor(double stamp_s, double bearing_rad, std::string* why) const;
   void RefreshMapToOdom(MappingUpdate* update);
 
   const MappingSessionOptions options_;
