@@ -5,9 +5,9 @@
 #include <functional>
 #include <map>
 #include <set>
-#include <utility>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace doorplate_localization {
 namespace {
@@ -85,15 +85,20 @@ const IcpReference& SlamBackEnd::Reference(int node) const {
   return *n.reference;
 }
 
+std::pair<double, double> SlamBackEnd::OdometryVariances(const Pose2D& step) const {
+  const double d = std::hypot(step.x_m, step.y_m);
+  const double turn = std::abs(step.theta_rad);
+  return {options_.odometry_trans_m2_per_m * d + options_.odometry_trans_m2_per_rad * turn +
+              options_.odometry_min_sigma_m * options_.odometry_min_sigma_m,
+          options_.odometry_rot_rad2_per_m * d + options_.odometry_rot_rad2_per_rad * turn +
+              options_.odometry_min_sigma_rad * options_.odometry_min_sigma_rad};
+}
+
 bool SlamBackEnd::AgreesWithOdometry(const Pose2D& odometry, const Pose2D& aligned) const {
   if (!(options_.sequential_gate_sigmas > 0)) return true;
   const double d = std::hypot(odometry.x_m, odometry.y_m);
-  const double turn = std::abs(odometry.theta_rad);
-  const double scale_var = options_.graph.scale_prior_sigma * options_.graph.scale_prior_sigma * d * d;
-  const double var_t = options_.odometry_trans_m2_per_m * d + options_.odometry_trans_m2_per_rad * turn +
-                       options_.odometry_min_sigma_m * options_.odometry_min_sigma_m + scale_var;
-  const double var_r = options_.odometry_rot_rad2_per_m * d + options_.odometry_rot_rad2_per_rad * turn +
-                       options_.odometry_min_sigma_rad * options_.odometry_min_sigma_rad;
+  const auto [step_var_t, var_r] = OdometryVariances(odometry);
+  const double var_t = step_var_t + options_.graph.scale_prior_sigma * options_.graph.scale_prior_sigma * d * d;
   const double dx = aligned.x_m - odometry.x_m, dy = aligned.y_m - odometry.y_m;
   const double dtheta = NormalizeAngle(aligned.theta_rad - odometry.theta_rad);
   const double gate = options_.sequential_gate_sigmas * options_.sequential_gate_sigmas;
@@ -106,12 +111,7 @@ PoseEdge SlamBackEnd::OdometryEdge(int from, int to) const {
   edge.to = to;
   edge.odometry = true;
   edge.measurement = nodes_[from].odometry.Between(nodes_[to].odometry);
-  const double d = std::hypot(edge.measurement.x_m, edge.measurement.y_m);
-  const double turn = std::abs(edge.measurement.theta_rad);
-  const double var_t = options_.odometry_trans_m2_per_m * d + options_.odometry_trans_m2_per_rad * turn +
-                       options_.odometry_min_sigma_m * options_.odometry_min_sigma_m;
-  const double var_r = options_.odometry_rot_rad2_per_m * d + options_.odometry_rot_rad2_per_rad * turn +
-                       options_.odometry_min_sigma_rad * options_.odometry_min_sigma_rad;
+  const auto [var_t, var_r] = OdometryVariances(edge.measurement);
   edge.information = Eigen::Vector3d(1.0 / var_t, 1.0 / var_t, 1.0 / var_r).asDiagonal();
   return edge;
 }

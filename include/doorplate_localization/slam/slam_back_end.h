@@ -110,6 +110,8 @@ class SlamBackEnd {
   // loop_closure_radius_m, at least loop_closure_min_separation earlier, the nearest of each earlier visit,
   // at most loop_closure_max_tries.
   std::vector<std::vector<int>> LoopClosureCandidates(int n, const std::function<const Pose2D&(int)>& pose_of) const;
+  // Translation and heading variance of an odometry step (the noise options above, without the scale).
+  std::pair<double, double> OdometryVariances(const Pose2D& step) const;
   PoseEdge OdometryEdge(int from, int to) const;
   // Whether an alignment's result lies within sequential_gate_sigmas of the odometry's relative pose.
   bool AgreesWithOdometry(const Pose2D& odometry, const Pose2D& aligned) const;
