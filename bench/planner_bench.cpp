@@ -2,7 +2,7 @@
 // obstacles grown by robotRadius) beside GridPathPlanner (A* on a wall-distance cost), on the same four
 // long queries: time per query and the clearance of the path's points (distance to the nearest occupied
 // cell centre, metres). Numbers in docs/results/floor-goto.md.
-//   doorplate_planner_bench [map.yaml]   (default: maps/hospital_floor_ring.yaml of the source tree)
+//   doorplate_planner_bench [--map map.yaml]   (default: maps/hospital_floor_ring.yaml of the source tree)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -13,10 +13,12 @@
 
 #include <mrpt/nav/planners/PlannerSimple2D.h>
 
+#include "cli_app.h"
 #include "doorplate_localization/behaviour/grid_path_planner.h"
 #include "doorplate_localization/maps/map_io.h"
 
 namespace dl = doorplate_localization;
+namespace tools = dl::tools;
 
 namespace {
 
@@ -66,11 +68,17 @@ void Report(const dl::OccupancyGrid& g, const char* name, const std::vector<dl::
               sum_c / path.size());
 }
 
-}  // namespace
+struct Args {
+  std::string map = std::string(DOORPLATE_SOURCE_DIR) + "/maps/hospital_floor_ring.yaml";
+};
 
-int main(int argc, char** argv) {
-  const std::string map_path =
-      argc > 1 ? argv[1] : std::string(DOORPLATE_SOURCE_DIR) + "/maps/hospital_floor_ring.yaml";
+void AddOptions(CLI::App* app, Args* args) {
+  app->add_option("--map", args->map, "occupancy map YAML (map_server format) the four queries run on; they are "
+                  "the ring floor's coordinates")->capture_default_str()->check(CLI::ExistingFile);
+}
+
+int Run(const Args& args) {
+  const std::string& map_path = args.map;
   const dl::OccupancyGrid g = dl::LoadOccupancyMap(map_path);
   std::printf("%s: %d x %d cells of %.2f m\n", map_path.c_str(), g.width, g.height, g.resolution_m);
 
@@ -114,4 +122,11 @@ int main(int argc, char** argv) {
     Report(g, q.name, path.waypoints, path.plan_seconds);
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return tools::RunTool("doorplate_planner_bench", "MRPT's PlannerSimple2D beside GridPathPlanner on four long queries "
+                        "of the ring floor: time per query, path length and clearance.", AddOptions, Run, argc, argv);
 }

@@ -32,6 +32,10 @@ if(DOORPLATE_FUZZ)
       src/ros/slam_conversions.cpp)
   set(message_conversions_fuzz_libs doorplate_mcl doorplate_slam doorplate_maps Eigen3::Eigen
       ${ROSCPP_SERIALIZATION_LIBRARY} ${ROSTIME_LIBRARY} ${CPP_COMMON_LIBRARY})
+  # The rosbag reading of doorplate_map_bag and doorplate_mission_report (issue 18): our reader instrumented,
+  # rosbag's library not.
+  list(APPEND doorplate_fuzz_targets bag_reader)
+  set(bag_reader_fuzz_libs doorplate_mission_bags)
   # The MRPT rawlog reader of doorplate_map_rawlog (cmake/slam.cmake builds it where MRPT is found).
   if(TARGET doorplate_rawlog_reader)
     list(APPEND doorplate_fuzz_targets rawlog_reader)

@@ -11,7 +11,8 @@ install(TARGETS doorplate_odometry_fit_lib LIBRARY DESTINATION ${CATKIN_PACKAGE_
 find_package(mrpt-obs QUIET)
 if(mrpt-obs_FOUND)
   add_executable(doorplate_odometry_fit src/tools/odometry_fit.cpp)
-  target_link_libraries(doorplate_odometry_fit doorplate_odometry_fit_lib doorplate_slam doorplate_rawlog_reader CLI11::CLI11)
+  target_link_libraries(doorplate_odometry_fit doorplate_odometry_fit_lib doorplate_slam doorplate_maps
+    doorplate_rawlog_reader doorplate_result_json CLI11::CLI11)
   install(TARGETS doorplate_odometry_fit RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 endif()
 

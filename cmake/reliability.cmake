@@ -7,6 +7,9 @@ if(CATKIN_ENABLE_TESTING)
   # The tools' command-line validators and exit statuses (src/tools/cli_app.h, CLI11).
   doorplate_add_core_test(cli_app_test test/tools/cli_app_test.cpp CLI11::CLI11)
   target_include_directories(cli_app_test PRIVATE src/tools)
+  # The long runs' progress line (src/tools/progress_line.h, issue 19).
+  doorplate_add_core_test(progress_line_test test/tools/progress_line_test.cpp)
+  target_include_directories(progress_line_test PRIVATE src/tools)
 endif()
 
 # doorplate_soak (src/tools/soak.cpp): the one-hour soak of docs/results/soak.md and, with --faults, the

@@ -10,6 +10,7 @@ add_library(doorplate_ros_conversions
   src/ros/map_conversions.cpp
   src/ros/text_detection_conversions.cpp
   src/ros/tf_lookup.cpp
+  src/ros/scan_tf_filter.cpp
   src/ros/lift_ride.cpp)
 target_include_directories(doorplate_ros_conversions PUBLIC include PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(doorplate_ros_conversions doorplate_maps ${catkin_LIBRARIES})
@@ -70,10 +71,14 @@ if(CATKIN_ENABLE_TESTING)
   target_link_libraries(text_extractor_nodelet_rostest doorplate_nodelets ${catkin_LIBRARIES})
 endif()
 
-# Tools that read ROS data (bags): the report of a simulated mission (scripts/demo.sh).
+# Tools that read ROS data (bags): the bag reading of doorplate_map_bag and the mission report (errors naming
+# the bag; fuzz/bag_reader_fuzz.cpp), the report of a simulated mission (scripts/demo.sh).
+add_library(doorplate_bag_reader STATIC src/ros/tools/bag_reader.cpp src/ros/tools/bag_structure.cpp)
+target_include_directories(doorplate_bag_reader PUBLIC include src/ros/tools ${catkin_INCLUDE_DIRS})
+target_link_libraries(doorplate_bag_reader PUBLIC ${catkin_LIBRARIES})
 add_library(doorplate_mission_bags STATIC src/ros/tools/mission_bags.cpp)
 target_include_directories(doorplate_mission_bags PUBLIC include src/ros/tools PRIVATE ${catkin_INCLUDE_DIRS})
-target_link_libraries(doorplate_mission_bags PUBLIC doorplate_common ${catkin_LIBRARIES})
+target_link_libraries(doorplate_mission_bags PUBLIC doorplate_bag_reader doorplate_common ${catkin_LIBRARIES})
 add_dependencies(doorplate_mission_bags ${PROJECT_NAME}_generate_messages_cpp)  # reads text_detections
 # Its pictures (folded map, per-plate errors, particle spread): ROS-free, OpenCV.
 add_library(doorplate_report_figures STATIC src/ros/tools/report_layout.cpp src/ros/tools/report_figures.cpp)
@@ -90,4 +95,8 @@ if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(mission_bags_test test/ros/mission_bags_test.cpp)
   target_include_directories(mission_bags_test PRIVATE ${catkin_INCLUDE_DIRS})
   target_link_libraries(mission_bags_test doorplate_mission_bags GTest::gtest_main ${catkin_LIBRARIES})
+  catkin_add_gtest(bag_reader_test test/ros/bag_reader_test.cpp)
+  target_link_libraries(bag_reader_test doorplate_bag_reader GTest::gtest_main ${catkin_LIBRARIES})
+  catkin_add_gtest(bag_structure_test test/ros/bag_structure_test.cpp)
+  target_link_libraries(bag_structure_test doorplate_bag_reader GTest::gtest_main ${catkin_LIBRARIES})
 endif()

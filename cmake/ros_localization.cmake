@@ -5,12 +5,13 @@ add_library(doorplate_localization_nodelet
   src/ros/amcl_conversions.cpp
   src/ros/text_amcl_options.cpp
   src/ros/text_amcl_building.cpp
-  src/ros/scan_tf_filter.cpp
-  src/ros/text_amcl_nodelet.cpp)
+  src/ros/text_amcl_reconfigure.cpp
+  src/ros/text_amcl_nodelet.cpp
+  src/ros/text_amcl_nodelet_inputs.cpp)
 target_include_directories(doorplate_localization_nodelet PUBLIC include PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(doorplate_localization_nodelet doorplate_ros_conversions doorplate_mcl doorplate_maps
                       ${catkin_LIBRARIES})
-add_dependencies(doorplate_localization_nodelet ${PROJECT_NAME}_generate_messages_cpp)
+add_dependencies(doorplate_localization_nodelet ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_gencfg)
 install(TARGETS doorplate_localization_nodelet LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
@@ -28,6 +29,19 @@ if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(scan_tf_filter_test test/ros/scan_tf_filter_test.cpp)
   target_include_directories(scan_tf_filter_test PRIVATE src/ros ${catkin_INCLUDE_DIRS})
   target_link_libraries(scan_tf_filter_test doorplate_localization_nodelet GTest::gtest_main ${catkin_LIBRARIES})
+
+  # cfg/TextAmcl.cfg against the parameter table and docs; a request through the startup checks (no ROS master).
+  catkin_add_gtest(text_amcl_reconfigure_test test/ros/text_amcl_reconfigure_test.cpp)
+  target_include_directories(text_amcl_reconfigure_test PRIVATE src/ros ${catkin_INCLUDE_DIRS})
+  target_link_libraries(text_amcl_reconfigure_test doorplate_localization_nodelet GTest::gtest_main ${catkin_LIBRARIES})
+
+  # Text AMCL alone on a map file: its reconfigure service takes a good value (it takes effect) and refuses
+  # bad ones (the values in force stay).
+  add_rostest_gtest(text_amcl_reconfigure_rostest test/ros/text_amcl_reconfigure.test
+                    test/ros/text_amcl_reconfigure_rostest.cpp)
+  target_include_directories(text_amcl_reconfigure_rostest PRIVATE src/ros ${catkin_INCLUDE_DIRS})
+  target_link_libraries(text_amcl_reconfigure_rostest ${catkin_LIBRARIES})
+  add_dependencies(text_amcl_reconfigure_rostest doorplate_localization_nodelet)
 
   # Sim + wall follower + text extractor + Text AMCL in one manager: global localization in a symmetric
   # corridor converges to the true pose. The checker also tests LoadTextAmclOptions (needs a parameter server).

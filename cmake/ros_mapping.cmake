@@ -21,7 +21,7 @@ install(TARGETS doorplate_mapping_nodelet LIBRARY DESTINATION ${CATKIN_PACKAGE_L
 # Offline mapping of a rosbag (scan + tf + text_detections) with the same TextSlam and option table.
 add_executable(doorplate_map_bag src/ros/tools/map_bag.cpp)
 target_include_directories(doorplate_map_bag PRIVATE src/tools ${catkin_INCLUDE_DIRS})
-target_link_libraries(doorplate_map_bag doorplate_mapping_conversions ${catkin_LIBRARIES} CLI11::CLI11)
+target_link_libraries(doorplate_map_bag doorplate_mapping_conversions doorplate_bag_reader ${catkin_LIBRARIES} CLI11::CLI11)
 install(TARGETS doorplate_map_bag RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)

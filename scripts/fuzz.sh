@@ -18,7 +18,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 all_targets=0
-[ ${#targets[@]} -gt 0 ] || { all_targets=1; targets=(world_loader text_map map_yaml map_image carmen_reader message_conversions); }
+[ ${#targets[@]} -gt 0 ] || { all_targets=1; targets=(world_loader text_map map_yaml map_image carmen_reader message_conversions bag_reader); }
 command -v clang++-14 > /dev/null || { echo "fuzz: clang++-14 not found (scripts/install_deps.sh installs it)"; exit 1; }
 
 source "$repo/scripts/env.sh" "$build"
@@ -42,8 +42,9 @@ for t in "${targets[@]}"; do
   # MRPT's rawlog reader (not ours, not instrumented) allocates what a length prefix says; the child process
   # that reads each file first (src/tools/rawlog_reader.h) then ends with ASan's report, unsymbolized for speed.
   [ "$t" = rawlog_reader ] && asan="$asan:max_allocation_size_mb=256:symbolize=0"
+  max_len=8192; [ "$t" = bag_reader ] && max_len=65536  # a bag stores each connection's message definitions
   if ASAN_OPTIONS="$asan" "$bin" -seed="$seed" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=1024 -malloc_limit_mb=512 \
-       -max_len=8192 -print_final_stats=1 -artifact_prefix="$build/artifacts/$t/" \
+       -max_len="$max_len" -print_final_stats=1 -artifact_prefix="$build/artifacts/$t/" \
        "$build/corpus/$t" "$repo/fuzz/corpus/$t" > "$build/$t.fuzz.log" 2>&1; then
     passed=$((passed + 1))
     echo "[fuzz] $t: ok ($(grep -m1 -o 'stat::number_of_executed_units: *[0-9]*' "$build/$t.fuzz.log" | grep -o '[0-9]*$') runs in ${seconds} s)"

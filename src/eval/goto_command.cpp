@@ -48,6 +48,10 @@ void AddGotoOptions(CLI::App* cmd, GotoArgs* a) {
       ->check(tools::PositiveNumber());
   cmd->add_option("--success-m", o.success_distance_m, "success: the true final position within this of the goal, m")
       ->capture_default_str()->check(tools::PositiveNumber());
+  o.progress_every_s = 60.0;
+  cmd->add_option("--progress-s", o.progress_every_s, "a progress line on stderr every this many simulated seconds "
+                  "(rewritten in place twice a second on a terminal; 0: none)")->capture_default_str()
+      ->check(tools::Number(0.0));
 }
 
 void PrintTable(const GotoEvalResult& r, const GotoEvalOptions& o) {

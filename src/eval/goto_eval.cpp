@@ -13,6 +13,7 @@
 #include "doorplate_localization/sim/simulator.h"
 #include "eval_args.h"
 #include "localize_sensors.h"
+#include "progress_line.h"
 #include "stats.h"
 
 namespace doorplate_localization {
@@ -59,8 +60,11 @@ enum class GotoPhase { kToLift, kSearch, kToRoom, kDone };
 // One trial: the robot, the behaviour, the localizer and (text) the reader.
 class GotoRun {
  public:
-  GotoRun(const GotoSetup& setup, const GotoEvalOptions& options, int index)
-      : setup_(setup), options_(options), seed_(PassSeed(options.seed, index)), rng_(seed_),
+  // `progress` gets a line when due; `run_sim_s`: simulated seconds of the run's earlier trials.
+  GotoRun(const GotoSetup& setup, const GotoEvalOptions& options, int index, tools::ProgressLine* progress,
+          double run_sim_s)
+      : setup_(setup), options_(options), progress_(progress), run_sim_s_(run_sim_s),
+        seed_(PassSeed(options.seed, index)), rng_(seed_),
         floor_(DrawStartFloor()), sim_(setup.building.worlds[static_cast<size_t>(floor_)], SimOptions(seed_)),
         search_(SearchOptions(options)) {
     const BuildingMaps& maps = *setup_.building.maps;
@@ -148,6 +152,7 @@ class GotoRun {
       }
       sim_.Step();
       trial_.bumped = trial_.bumped || sim_.bumped();
+      if (progress_->Due(run_sim_s_ + sim_.time_s())) ShowProgress();
       if (sim_.time_s() > time_limit_s) {
         timed_out = true;
         break;
@@ -235,6 +240,22 @@ class GotoRun {
     }
   }
 
+  void ShowProgress() {
+    const int trial = trial_.index - options_.first_trial + 1;
+    const double sim_s = run_sim_s_ + sim_.time_s();
+    if (phase_ == GotoPhase::kSearch) {
+      progress_->Show("goto: trial %d/%d, %.0f s simulated, %.1f m driven, after the lift ride %.1f m searched, "
+                      "particle spread %.2f m, %d plates used", trial, options_.trials, sim_s,
+                      sim_.distance_travelled_m(), trial_.searched_m,
+                      ParticleSpreadM(session_->session().particles()), trial_.plate_updates);
+      return;
+    }
+    const std::string target = phase_ == GotoPhase::kToLift ? "lift " + route_->lift : "room " + trial_.room;
+    progress_->Show("goto: trial %d/%d, to %s, %.0f s simulated, %.1f m driven, distance left %.1f m, %s", trial,
+                    options_.trials, target.c_str(), sim_s, sim_.distance_travelled_m(), go_->follower().remaining_m(),
+                    PathFollowStateName(go_->follower().state()));
+  }
+
   void CameraStep() {
     trial_.plate_updates += FeedCameraFrame(sim_, *extractor_, camera_yaw_rad_, *session_).plate_updates;
   }
@@ -265,6 +286,8 @@ class GotoRun {
 
   const GotoSetup& setup_;
   const GotoEvalOptions& options_;
+  tools::ProgressLine* const progress_;
+  const double run_sim_s_;
   const std::uint64_t seed_;
   std::mt19937_64 rng_;
   int floor_;  // the floor the robot is on
@@ -344,10 +367,14 @@ GotoEvalResult RunGotoEval(const LocalizeBuilding& building, const GotoEvalOptio
   GotoEvalResult result;
   result.world_name = building.name;
   for (const FloorMaps& floor : building.maps->floors) result.floors.push_back(floor.id);
+  tools::ProgressLine progress({options.progress_every_s});
+  double run_sim_s = 0.0;
   for (int i = options.first_trial; i < options.first_trial + options.trials; ++i) {
-    GotoRun run(setup, options, i);
+    GotoRun run(setup, options, i, &progress, run_sim_s);
     result.trials.push_back(run.Run());
+    run_sim_s += result.trials.back().sim_seconds;
   }
+  progress.Finish();
   result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return result;
 }

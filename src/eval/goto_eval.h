@@ -57,6 +57,10 @@ struct GotoEvalOptions {
   TextAmclSetupOptions filter;          // use_text and the random seed are set per trial
   TextExtractorOptions extractor;       // tracker intrinsics and room pattern are set from the run
   StartPoseSamplerOptions poses;
+  // > 0: a progress line on stderr (trial, simulated seconds, distance driven, distance left along the plan,
+  // or the search after a ride) every this many simulated seconds of the run, rewritten in place on a
+  // terminal (progress_line.h).
+  double progress_every_s = 0.0;
 };
 
 struct GotoTrial {

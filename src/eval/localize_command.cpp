@@ -56,6 +56,10 @@ void AddLocalizeOptions(CLI::App* cmd, LocalizeArgs* a) {
                   "this many)")->capture_default_str()->transform(tools::WholeNumber(1));
   cmd->add_option("--laser-model", a->laser_model, "laser_model_type: likelihood_field, likelihood_field_prob or beam")
       ->capture_default_str();
+  o.progress_every_s = 60.0;
+  cmd->add_option("--progress-s", o.progress_every_s, "a progress line on stderr every this many simulated seconds "
+                  "(rewritten in place twice a second on a terminal; 0: none)")->capture_default_str()
+      ->check(tools::Number(0.0));
 }
 
 void PrintSummary(const LocalizeEvalResult& r, const LocalizeEvalOptions& o) {

@@ -9,6 +9,7 @@
 #include "doorplate_localization/sim/simulator.h"
 #include "eval_args.h"
 #include "localize_sensors.h"
+#include "progress_line.h"
 #include "stats.h"
 
 namespace doorplate_localization {
@@ -34,9 +35,11 @@ void Validate(const LocalizeEvalOptions& o, bool has_text_map) {
 // One trial's simulation: the robot, its search behaviour, the filter and (text_amcl) the reader.
 class TrialRun {
  public:
+  // `progress` gets a line when due; `run_sim_s`: simulated seconds of the run's earlier trials.
   TrialRun(const LocalizeBuilding& building, const std::vector<StartPoseSampler>& poses,
-           const LocalizeEvalOptions& options, int index)
-      : building_(building), options_(options), poses_(poses), seed_(PassSeed(options.seed, index)), rng_(seed_),
+           const LocalizeEvalOptions& options, int index, tools::ProgressLine* progress, double run_sim_s)
+      : building_(building), options_(options), poses_(poses), progress_(progress), run_sim_s_(run_sim_s),
+        seed_(PassSeed(options.seed, index)), rng_(seed_),
         floor_(DrawFloor()), sim_(building.worlds[static_cast<size_t>(floor_)], SimOptions(seed_)),
         sweep_(SweepOptions(options)), contour_(ContourOptions(options)) {
     trial_.index = index;
@@ -85,6 +88,7 @@ class TrialRun {
       }
       if (done) break;
       sim_.Step();
+      if (progress_->Due(run_sim_s_ + sim_.time_s())) ShowProgress();
       const bool too_far = sim_.distance_travelled_m() - search_start_travel_m_ > options_.max_travel_m;
       const bool too_long = sim_.time_s() - search_start_time_s_ > search_time_limit_s;
       if (too_far || too_long) {
@@ -159,6 +163,15 @@ class TrialRun {
     return CheckState();
   }
 
+  void ShowProgress() {
+    const TextAmclStatus status = session_->Status();
+    progress_->Show("localize: trial %d/%d%s, %.0f s simulated, %.1f m driven, particle spread %.2f m (%d particles), "
+                    "%d/%d plates used, %s", trial_.index + 1, options_.trials, trial_.kidnapped ? " (kidnapped)" : "",
+                    run_sim_s_ + sim_.time_s(), sim_.distance_travelled_m() - search_start_travel_m_,
+                    ParticleSpreadM(session_->session().particles()), status.particle_count, trial_.plate_updates,
+                    trial_.plate_reports, ToString(status.state));
+  }
+
   LocalizeFix Fix() const {
     LocalizeFix fix;
     fix.travel_m = sim_.distance_travelled_m() - search_start_travel_m_;
@@ -224,6 +237,8 @@ class TrialRun {
   const LocalizeBuilding& building_;
   const LocalizeEvalOptions& options_;
   const std::vector<StartPoseSampler>& poses_;
+  tools::ProgressLine* const progress_;
+  const double run_sim_s_;
   const std::uint64_t seed_;
   std::mt19937_64 rng_;
   int floor_;  // the floor the robot is on (index into building_.worlds)
@@ -291,6 +306,19 @@ LocalizeEvalResult RunLocalizeEval(const World& world, const OccupancyGrid& grid
   return RunLocalizeEval(OneFloorBuilding(world, grid, std::move(text_map), ground_truth_grid), options);
 }
 
+double ParticleSpreadM(const std::vector<Particle>& particles) {
+  if (particles.size() < 2) return 0.0;
+  Vec2 mean{0.0, 0.0};
+  for (const Particle& p : particles) mean = mean + p.pose.Position();
+  mean = (1.0 / static_cast<double>(particles.size())) * mean;
+  double sum_sq = 0.0;
+  for (const Particle& p : particles) {
+    const Vec2 d = p.pose.Position() - mean;
+    sum_sq += Dot(d, d);
+  }
+  return std::sqrt(sum_sq / static_cast<double>(particles.size()));
+}
+
 std::shared_ptr<const BuildingMaps> SessionMaps(std::shared_ptr<const BuildingMaps> maps, bool use_text) {
   if (use_text) return maps;
   auto laser_only = std::make_shared<BuildingMaps>(*maps);
@@ -337,10 +365,14 @@ LocalizeEvalResult RunLocalizeEval(const LocalizeBuilding& building, const Local
   result.kidnap = options.kidnap;
   result.floor_start_poses = poses.front().on_floor();
   for (const FloorMaps& floor : building.maps->floors) result.floors.push_back(floor.id);
+  tools::ProgressLine progress({options.progress_every_s});
+  double run_sim_s = 0.0;
   for (int i = 0; i < options.trials; ++i) {
-    TrialRun trial(run, poses, options, i);
+    TrialRun trial(run, poses, options, i, &progress, run_sim_s);
     result.trials.push_back(trial.Run());
+    run_sim_s += result.trials.back().sim_seconds;
   }
+  progress.Finish();
   result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return result;
 }

@@ -40,6 +40,7 @@
 #include "doorplate_localization/maps/building_map.h"
 #include "doorplate_localization/maps/occupancy_grid.h"
 #include "doorplate_localization/maps/text_map.h"
+#include "doorplate_localization/mcl/particle.h"
 #include "doorplate_localization/mcl/text_amcl_setup.h"
 #include "doorplate_localization/sim/world.h"
 #include "doorplate_localization/text/text_extractor.h"
@@ -75,6 +76,10 @@ struct LocalizeEvalOptions {
   ContourSteeringOptions contour;       // drive kContour (cruise_speed_mps is set from speed_mps)
   TextExtractorOptions extractor;       // known rooms and the tracker intrinsics are set from the run
   StartPoseSamplerOptions poses;
+  // > 0: a progress line on stderr (trial, simulated seconds, distance driven, the particles' spread, plates
+  // used, filter state) every this many simulated seconds of the run, rewritten in place on a terminal
+  // (progress_line.h).
+  double progress_every_s = 0.0;
 };
 
 // The filter's estimate compared with the truth at one moment.
@@ -148,6 +153,10 @@ struct LocalizeSummary {
 };
 
 LocalizeSummary Summarize(const LocalizeEvalResult& result);
+
+// The spread of a particle set: RMS distance of the particles' positions from their mean, metres (0 for
+// fewer than two); the measure of scripts/mission_progress.py on particlecloud.
+double ParticleSpreadM(const std::vector<Particle>& particles);
 
 // Runs the experiment on `world` with the map the filter knows: `grid` (occupancy) and `text_map` (may be
 // null for amcl; required for text_amcl). `ground_truth_grid` rejects start poses near obstacles (usually

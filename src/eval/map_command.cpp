@@ -42,7 +42,8 @@ void AddMapOptions(CLI::App* map, MapArgs* a) {
                   "passes) or auto (explore when the world lists more than one corridor)")->capture_default_str();
   map->add_option("--set", a->sets, "SLAM options NAME=VALUE[,NAME=VALUE...] (names: rbpf_slam_options.h, "
                   "text.<field>; repeatable)")->delimiter(',')->allow_extra_args(false);
-  map->add_option("--progress-s", a->progress_s, "a progress line on stderr every this many simulated seconds (0: none)")
+  map->add_option("--progress-s", a->progress_s, "a progress line on stderr every this many simulated seconds "
+                  "(rewritten in place twice a second on a terminal; 0: none)")
       ->capture_default_str()->check(tools::Number(0.0));
   map->add_option("--json", a->json, "write the results as JSON to this file")->check(tools::InExistingFolder());
   map->add_option("--out-dir", a->out_dir, "write map.pgm/.yaml, text_map.yaml and map.png into this folder");

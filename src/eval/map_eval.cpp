@@ -14,6 +14,7 @@
 #include "doorplate_localization/sim/simulator.h"
 #include "doorplate_localization/slam/mapping_session.h"
 #include "eval_args.h"
+#include "progress_line.h"
 
 namespace doorplate_localization {
 namespace {
@@ -104,16 +105,15 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
   const double frame_period_s = 1.0 / sim_world.sensors.camera.rate_hz;
   int next_frame = 0;
   bool first = true;
-  double next_progress_s = options.progress_every_s;
+  tools::ProgressLine progress({options.progress_every_s});
   for (long long step = 0; sim.time_s() < options.max_time_s; ++step) {
-    if (options.progress_every_s > 0 && sim.time_s() >= next_progress_s) {
-      next_progress_s += options.progress_every_s;
+    if (progress.Due(sim.time_s())) {
       const std::string phase = !explore ? SweepPhaseName(sweep.phase())
                                 : explorer.phase() == ExplorePhase::kFollow ? "pass " + std::to_string(explorer.pass())
                                                                              : ExplorePhaseName(explorer.phase());
-      std::fprintf(stderr, "map: %.0f s simulated, %.1f m driven, %d plate reports, %d scans processed, %s\n",
-                   sim.time_s(), sim.distance_travelled_m(), result.plate_reports, result.scans_processed,
-                   phase.c_str());
+      progress.Show("map: %.0f s simulated, %.1f m driven, %d plate reports, %d scans processed, %s",
+                    sim.time_s(), sim.distance_travelled_m(), result.plate_reports, result.scans_processed,
+                    phase.c_str());
     }
     if (step % steps_per_scan == 0) {
       const SimulatedScan scan = sim.Scan();
@@ -122,7 +122,9 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
         first = false;
       }
       const double t0 = ThreadCpuSeconds();
-      if (session.AddScan(sim.time_s(), sim.odom_pose(), ToRangeScan(scan, sim_world.sensors.laser)).scan_processed) {
+      const MappingUpdate update = session.AddScan(sim.time_s(), sim.odom_pose(), ToRangeScan(scan, sim_world.sensors.laser));
+      for (const MappingPlateOutcome& o : update.plates) result.plate_reports_used += o.result.used();  // held ones
+      if (update.scan_processed) {
         ++result.scans_processed;
         result.true_trajectory.push_back(result.world_from_map.Inverse().Compose(sim.true_pose()));
       }
@@ -159,11 +161,12 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
         const MappingUpdate update = session.AddPlates(sim.time_s(), sim.odom_pose(), {sighting});
         result.slam_seconds += ThreadCpuSeconds() - t0;
         ++result.plate_reports;
-        if (update.plates.at(0).result.used()) ++result.plate_reports_used;
+        for (const MappingPlateOutcome& o : update.plates) result.plate_reports_used += o.result.used();
       }
     }
     sim.Step();
   }
+  progress.Finish();
   result.sweep_done = explore ? explorer.phase() == ExplorePhase::kDone : sweep.phase() == SweepPhase::kDone;
   result.distance_m = sim.distance_travelled_m();
   result.sim_seconds = sim.time_s();

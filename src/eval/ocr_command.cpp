@@ -22,7 +22,7 @@ struct OcrArgs {
   bool band = true, known_rooms = false, band_geometry = false;
   std::string detector = "mser", recognizer = "tesseract", ocr_mode = "default", camera_px;
   int detector_every = 1;
-  double max_pass_seconds = 1800;
+  double max_pass_seconds = 1800, progress_s = 60;
 };
 
 void AddOcrOptions(CLI::App* ocr, OcrArgs* a) {
@@ -45,6 +45,9 @@ void AddOcrOptions(CLI::App* ocr, OcrArgs* a) {
   ocr->add_option("--band-geometry", a->band_geometry, "on: band rows from the camera's intrinsics and mount and the "
                   "world's plate heights (BandFromGeometry) instead of the fixed fractions")
       ->transform(tools::OnOff())->default_str("off");
+  ocr->add_option("--progress-s", a->progress_s, "a progress line on stderr every this many simulated seconds "
+                  "(rewritten in place twice a second on a terminal; 0: none)")->capture_default_str()
+      ->check(tools::Number(0.0));
 }
 
 // "1280x720" → the world's camera at that size with its other intrinsics derived again.
@@ -133,6 +136,7 @@ int RunOcr(const OcrArgs& a, const std::string& command_line) {
   }
   options.detector_every_n_frames = a.detector_every;
   options.max_pass_time_s = a.max_pass_seconds;
+  options.progress_every_s = a.progress_s;
 
   World world = LoadWorldFile(common.world_path);
   if (!a.camera_px.empty()) SetCameraSize(a.camera_px, &world);

@@ -18,6 +18,7 @@
 #include "doorplate_localization/sim/simulator.h"
 #include "doorplate_localization/text/mser_band_detector.h"
 #include "eval_args.h"
+#include "progress_line.h"
 
 namespace doorplate_localization {
 namespace {
@@ -140,6 +141,8 @@ OcrEvalResult RunOcrEval(const World& world, const OcrEvalOptions& options) {
   CorridorSweepOptions sweep_options = options.sweep;
   sweep_options.follower.cruise_speed_mps = options.speed_mps;
 
+  tools::ProgressLine progress({options.progress_every_s});
+  double run_sim_s = 0.0;  // simulated seconds of the earlier passes
   for (int pass = 0; pass < options.passes; ++pass) {
     SimulatorOptions sim_options;
     sim_options.seed = PassSeed(options.seed, pass);
@@ -220,7 +223,15 @@ OcrEvalResult RunOcrEval(const World& world, const OcrEvalOptions& options) {
         }
       }
       sim.Step();
+      if (progress.Due(run_sim_s + sim.time_s())) {
+        const PassScore& score = scorer.pass();
+        progress.Show("ocr: pass %d/%d, %.0f s simulated, %.1f m driven, %d frames, %d plates passed, %d read right, "
+                      "%d false reads, %s", pass + 1, options.passes, run_sim_s + sim.time_s(),
+                      sim.distance_travelled_m(), pass_result.frames, score.plates_passed, score.plates_correct,
+                      score.false_reads, SweepPhaseName(sweep.phase()));
+      }
     }
+    run_sim_s += sim.time_s();
     pass_result.sweep_done = sweep.phase() == SweepPhase::kDone;
     pass_result.sim_seconds = sim.time_s();
     pass_result.wall_seconds = SecondsSince(pass_start);
@@ -241,6 +252,7 @@ OcrEvalResult RunOcrEval(const World& world, const OcrEvalOptions& options) {
     }
     result.passes.push_back(pass_result);
   }
+  progress.Finish();
   for (Fig12Detector& d : fig12) result.detectors.push_back(d.stats);
   return result;
 }

@@ -29,6 +29,9 @@ struct OcrEvalOptions {
   std::string dump_dir;            // "": no failure images
   CorridorSweepOptions sweep;      // cruise speed overridden by speed_mps
   TextExtractorOptions extractor;  // band, known rooms, tracker intrinsics set from the above / camera
+  // > 0: a progress line on stderr (pass, simulated seconds, distance driven, plates passed and read) every
+  // this many simulated seconds of the run, rewritten in place on a terminal (progress_line.h).
+  double progress_every_s = 0.0;
 };
 
 // A reading error or a missed plate, for the JSON detail and the dumps.

@@ -32,4 +32,8 @@ std::string ResultJsonText(const Json& json) {
   return Rounded(json).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
+std::string ResultJsonLine(const Json& json) {
+  return Rounded(json).dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
 }  // namespace doorplate_localization

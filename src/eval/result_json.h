@@ -15,5 +15,7 @@ using Json = nlohmann::ordered_json;
 // The text of `json` as a results file holds it. Strings pass through as UTF-8; a byte sequence that is
 // not UTF-8 (a recogniser's output cut short) is replaced by U+FFFD rather than losing the file.
 std::string ResultJsonText(const Json& json);
+// The same numbers and strings on one line without spaces or a final newline (for a console summary).
+std::string ResultJsonLine(const Json& json);
 
 }  // namespace doorplate_localization

@@ -38,6 +38,12 @@ void AugmentedMclAverages::Update(double log_w_avg) {
   log_w_fast_ = LogBlend(log_w_fast_, log_w_avg, alpha_fast_);
 }
 
+void AugmentedMclAverages::TakeAveragesFrom(const AugmentedMclAverages& other) {
+  initialized_ = other.initialized_;
+  log_w_slow_ = other.log_w_slow_;
+  log_w_fast_ = other.log_w_fast_;
+}
+
 void AugmentedMclAverages::Reset() {
   initialized_ = false;
   log_w_slow_ = log_w_fast_ = 0.0;

@@ -49,6 +49,34 @@ BuildingSession::BuildingSession(const BuildingSessionOptions& options, std::sha
   for (int floor = 0; floor < static_cast<int>(sessions_.size()); ++floor) Session(floor);
 }
 
+namespace {
+BuildingSessionOptions WithSession(BuildingSessionOptions options, const TextAmclSessionOptions& session) {
+  options.session = session;
+  return options;
+}
+}  // namespace
+
+BuildingSession::BuildingSession(const BuildingSession& previous, const TextAmclSessionOptions& session)
+    : options_(WithSession(previous.options_, session)),
+      maps_(previous.maps_),
+      rooms_(previous.rooms_),
+      belief_(previous.belief_),
+      current_(previous.current_),
+      floor_switches_(previous.floor_switches_),
+      events_(previous.events_),
+      readings_(previous.readings_) {
+  for (size_t floor = 0; floor < previous.sessions_.size(); ++floor) {
+    const FloorMaps& maps = maps_->floors[floor];
+    TextAmclSessionOptions o = options_.session;
+    o.setup.filter.random_seed += static_cast<unsigned>(floor);  // as Session(): the stream itself carries over
+    try {
+      sessions_.push_back(std::make_unique<TextAmclSession>(o, maps.grid, *previous.sessions_[floor]));
+    } catch (const std::exception& e) {
+      throw std::invalid_argument("floor '" + maps.id + "': " + e.what());
+    }
+  }
+}
+
 TextAmclSession& BuildingSession::Session(int floor) {
   std::unique_ptr<TextAmclSession>& slot = sessions_[static_cast<size_t>(floor)];
   if (slot) return *slot;

@@ -72,6 +72,23 @@ TextAmcl::TextAmcl(const TextAmclOptions& options, TextAmclModels models)
           "must be in (0, 1]", o.lost_likelihood_ratio);
 }
 
+void TextAmcl::ContinueFrom(const TextAmcl& previous) {
+  rng_ = previous.rng_;
+  recovery_.TakeAveragesFrom(previous.recovery_);
+  particles_ = previous.particles_;
+  counted_ = previous.counted_;
+  last_odom_ = previous.last_odom_;
+  has_odom_ = previous.has_odom_;
+  pending_update_ = previous.pending_update_;
+  force_update_ = previous.force_update_;
+  resample_counter_ = previous.resample_counter_;
+  state_ = previous.state_;
+  lost_reason_ = previous.lost_reason_;
+  awaiting_plate_ = previous.awaiting_plate_;
+  counters_ = previous.counters_;
+  clusters_valid_ = false;
+}
+
 void TextAmcl::ReplaceParticles(const std::vector<Pose2D>& poses) {
   particles_.clear();
   const double w = poses.empty() ? 0.0 : 1.0 / poses.size();

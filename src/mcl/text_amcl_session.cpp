@@ -60,6 +60,28 @@ TextAmclSession::TextAmclSession(const TextAmclSessionOptions& options, const Oc
   }
 }
 
+TextAmclSession::TextAmclSession(const TextAmclSessionOptions& options, const OccupancyGrid& map,
+                                 const TextAmclSession& previous)
+    : options_(options),
+      text_map_(previous.text_map_),
+      odometry_(previous.odometry_),
+      pending_(previous.pending_),
+      scans_(previous.scans_),
+      filter_odom_(previous.filter_odom_),
+      move_at_next_scan_(previous.move_at_next_scan_),
+      unknown_rooms_(previous.unknown_rooms_),
+      estimate_(previous.estimate_),
+      map_to_odom_(previous.map_to_odom_),
+      counters_(previous.counters_) {
+  Validate(options_);
+  filter_ = MakeTextAmcl(options_.setup, map, text_map_);
+  filter_->ContinueFrom(*previous.filter_);
+  if (options_.setup.use_text && text_map_) {
+    matcher_ = std::make_unique<TextMatcher>(options_.setup.plate.text_match);
+  }
+  status_ = filter_->Status();
+}
+
 void TextAmclSession::Initialize(const Pose2D& mean, const Eigen::Matrix3d& covariance) {
   filter_->Initialize(mean, covariance);
   Restarted();

@@ -98,6 +98,9 @@ std::optional<PlateSighting> ToPlateSighting(const TextDetection& msg, const Cam
     problem = "not at the image-centre crossing";
   } else if (msg.text.empty()) {
     problem = "text is empty";
+  } else if (msg.text.size() > limits::kMaxPlateTextBytes) {  // issue 18: a 1 MB text was logged whole
+    problem = "text: " + std::to_string(msg.text.size()) + " bytes, more than the limit of " +
+              std::to_string(limits::kMaxPlateTextBytes) + " (limits::kMaxPlateTextBytes)";
   } else {
     problem = ValidateTextDetection(msg);
   }
@@ -152,7 +155,7 @@ std::string PrepareSlamSightings(const TextDetectionArray& msg, const TransformL
     if (auto sighting = ToPlateSighting(detection, camera, &why_not)) {
       sightings->push_back(std::move(*sighting));
     } else if (IsPlateReport(detection) && rejected != nullptr) {
-      rejected->push_back("'" + detection.text + "': " + why_not);
+      rejected->push_back("'" + limits::TruncateForLog(detection.text) + "': " + why_not);
     }
   }
   return "";

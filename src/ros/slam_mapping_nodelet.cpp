@@ -2,10 +2,12 @@
 // around the mapping session (slam/mapping_session.h: throttling, stamps, plate ranges, when the back end
 // is solved, map -> odom), the loop `doorplate_eval map` and the offline tools run too. Each callback is
 // validate -> convert (slam_conversions.h) -> session -> publish.
-// Subscribes scan (sensor_msgs/LaserScan; held back by a tf2 message filter until odom -> scan frame is
-// known at its stamp; the laser's mounting comes from tf base_frame -> scan frame) and, with ~use_text,
+// Subscribes scan (sensor_msgs/LaserScan; a broken scan is refused at once, the others held back by a
+// ScanTfFilter (scan_tf_filter.h, the localizer's too) until odom -> scan frame is known at its stamp; the
+// laser's mounting comes from tf base_frame -> scan frame) and, with ~use_text,
 // text_detections (doorplate_localization/TextDetectionArray; detections at the image-centre crossing with
-// a text; bearing composed with the camera's optical axis in base_frame from tf).
+// a text; bearing composed with the camera's optical axis in base_frame from tf; a plate read before the
+// scans near its stamp arrived waits in the session for them).
 // Publishes map (nav_msgs/OccupancyGrid, latched) and map_metadata (latched) whenever the session solved
 // (every map_update_interval of scan time), ~entropy (std_msgs/Float64, gmapping's pose entropy) per
 // processed scan, text_landmarks (visualization_msgs/MarkerArray, latched) when the landmarks change, and
@@ -34,7 +36,6 @@
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/TransformStamped.h>
-#include <message_filters/subscriber.h>
 #include <nav_msgs/GetMap.h>
 #include <nav_msgs/MapMetaData.h>
 #include <nav_msgs/OccupancyGrid.h>
@@ -45,7 +46,6 @@
 #include <std_msgs/Float64.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/buffer.h>
-#include <tf2_ros/message_filter.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
@@ -58,6 +58,7 @@
 #include "doorplate_localization/ros/slam_conversions.h"
 #include "doorplate_localization/ros/text_detection_conversions.h"
 #include "doorplate_localization/slam/mapping_session.h"
+#include "scan_tf_filter.h"
 #include "slam_mapping_options.h"
 
 namespace doorplate_localization {
@@ -103,20 +104,16 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     diagnostics_pub_ = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 1);
     health_timer_ = nh.createTimer(ros::Duration(1.0), &SlamMappingNodelet::OnHealthTimer, this);
 
-    scan_topic_ = nh.resolveName("scan");
-    // Queues of kScanQueueSize: a back-end solve holds this nodelet for ~1 s (more on a loaded machine, 5x
-    // that in sim time at 5x real time); the scans received meanwhile must not be dropped, or a plate read in
-    // that time finds no scan near its stamp for its range (the live demo lost 4 of 16 plates so).
-    scan_sub_.subscribe(nh, "scan", kScanQueueSize);
-    scan_filter_ = std::make_unique<tf2_ros::MessageFilter<sensor_msgs::LaserScan>>(
-        scan_sub_, *tf_buffer_, options_.odom_frame, kScanQueueSize, nh);
-    scan_filter_->registerCallback(&SlamMappingNodelet::OnScan, this);
-    scan_filter_->registerFailureCallback(
-        [this](const sensor_msgs::LaserScan::ConstPtr& scan, tf2_ros::filter_failure_reasons::FilterFailureReason) {
+    // Scans wait in a ScanTfFilter (scan_tf_filter.h, as the localizer's) until tf has the odometry at their
+    // stamp. Its queue of kScanTfQueueSize: a back-end solve holds this nodelet for ~1 s (more on a loaded
+    // machine, 5x that in sim time at 5x real time); the scans received meanwhile must not be dropped.
+    scan_filter_ = std::make_unique<ScanTfFilter>(*tf_buffer_, options_.odom_frame, kScanTfQueueSize,
+        nh.getCallbackQueue(), [this](const auto& m) { OnScan(m); }, [this](const auto&, const auto& why, bool) {
           std::lock_guard<std::mutex> lock(mutex_);
-          DropScan("no tf " + options_.odom_frame + " -> " + scan->header.frame_id + " at the scan's stamp " +
-                   std::to_string(scan->header.stamp.toSec()));
+          DropScan(why);
         });
+    scan_filter_->Subscribe(nh, "scan");
+    scan_topic_ = scan_filter_->topic();
     if (options_.use_text) {
       detections_topic_ = nh.resolveName("text_detections");
       detections_sub_ = nh.subscribe("text_detections", kTextDetectionsQueueSize, &SlamMappingNodelet::OnDetections, this);
@@ -173,6 +170,7 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     ++scans_since_health_;
     error_.clear();
     last_drop_.clear();
+    if (NotePlates(update.plates)) PublishLandmarks(stamp);  // sightings that waited for this scan
     if (!update.scan_processed) return;
     std_msgs::Float64 entropy;
     entropy.data = PoseEntropy(session_->slam().slam().particles());
@@ -199,24 +197,40 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     bool changed = false;
     for (const PlateSighting& sighting : sightings) {  // one by one: a malformed one does not drop the others
       try {
-        for (const MappingPlateOutcome& o : session_->AddPlates(stamp.toSec(), odom_pose, {sighting}).plates) {
-          ++(o.result.used() ? plates_used_ : plates_ignored_);
-          if (o.result.used()) {
-            changed = true;
-            NODELET_INFO("slam mapping: plate '%s' %s (landmark %d, range %.2f m)", o.sighting.text.c_str(),
-                         o.result.outcome == PlateOutcome::kNewLandmark ? "mapped" : "re-observed",
-                         o.result.landmark_index, o.result.range_m);
-          } else {
-            NODELET_INFO("slam mapping: plate '%s' not used: %s", o.sighting.text.c_str(), o.result.reason.c_str());
-          }
+        const MappingUpdate update = session_->AddPlates(stamp.toSec(), odom_pose, {sighting});
+        changed = NotePlates(update.plates) || changed;
+        if (update.plates_held > 0) {
+          NODELET_DEBUG("slam mapping: plate '%s' waits for the scans near its stamp %.2f s", sighting.text.c_str(),
+                        stamp.toSec());
         }
       } catch (const std::invalid_argument& e) {
         NODELET_WARN_THROTTLE(5.0, "%s: detection '%s': %s; dropping it", detections_topic_.c_str(),
                               sighting.text.c_str(), e.what());
       }
     }
-    // The landmarks as they stand (the last solve's positions, the best particle's for plates read since).
-    if (changed) markers_pub_.publish(ToTextLandmarkMarkers(MapFrame(session_->slam().BuildTextMap()), options_.map_frame, stamp));
+    if (changed) PublishLandmarks(stamp);
+  }
+
+  // Logs and counts the session's plate outcomes; true when one was used (the landmarks changed).
+  bool NotePlates(const std::vector<MappingPlateOutcome>& outcomes) {
+    bool used = false;
+    for (const MappingPlateOutcome& o : outcomes) {
+      ++(o.result.used() ? plates_used_ : plates_ignored_);
+      if (o.result.used()) {
+        used = true;
+        NODELET_INFO("slam mapping: plate '%s' %s (landmark %d, range %.2f m)", o.sighting.text.c_str(),
+                     o.result.outcome == PlateOutcome::kNewLandmark ? "mapped" : "re-observed",
+                     o.result.landmark_index, o.result.range_m);
+      } else {
+        NODELET_INFO("slam mapping: plate '%s' not used: %s", o.sighting.text.c_str(), o.result.reason.c_str());
+      }
+    }
+    return used;
+  }
+
+  // The landmarks as they stand (the last solve's positions, the best particle's for plates read since).
+  void PublishLandmarks(const ros::Time& stamp) {
+    markers_pub_.publish(ToTextLandmarkMarkers(MapFrame(session_->slam().BuildTextMap()), options_.map_frame, stamp));
   }
 
   // 1 Hz: /diagnostics.
@@ -324,9 +338,7 @@ class SlamMappingNodelet : public nodelet::Nodelet {
   std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
-  static constexpr uint32_t kScanQueueSize = 100;  // 10 s of a 10 Hz laser
-  message_filters::Subscriber<sensor_msgs::LaserScan> scan_sub_;
-  std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::LaserScan>> scan_filter_;
+  std::unique_ptr<ScanTfFilter> scan_filter_;  // after tf_buffer_: destroyed before it
   ros::Subscriber detections_sub_;
   ros::Publisher map_pub_, metadata_pub_, markers_pub_, entropy_pub_, diagnostics_pub_;
   ros::ServiceServer map_srv_, save_srv_;

@@ -170,6 +170,20 @@ void LocalizerCore::InitialPose(const StartPose& pose) {
   if (session_) Restarted();
 }
 
+std::string LocalizerCore::Reconfigure(const TextAmclSetupOptions& setup) {
+  TextAmclSessionOptions session = options_.session;
+  session.setup = setup;
+  if (session_) {
+    try {
+      session_ = std::make_unique<BuildingSession>(*session_, session);
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+  }
+  options_.session = session;
+  return "";
+}
+
 void LocalizerCore::ScanTaken(double now_s) {
   last_scan_s_ = now_s;
   error_.clear();

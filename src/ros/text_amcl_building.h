@@ -105,6 +105,11 @@ class LocalizerCore {
   // start pose on later maps; cancels a queued global localization. Throws std::invalid_argument for a
   // covariance the filter refuses (nothing changed).
   void InitialPose(const StartPose& pose);
+  // dynamic_reconfigure: the filter and its models from now on (`setup`, validated by the caller as at
+  // startup). With a session in force, a whole new one continuing from it (BuildingSession's continuing
+  // constructor: every floor keeps its particles) replaces it; "" then, or why the core refused (nothing
+  // changed). Without one, the next map's session uses `setup`.
+  std::string Reconfigure(const TextAmclSetupOptions& setup);
   // The nodelet took a scan into the session at `now_s` (clears an error), or the session threw `what`.
   void ScanTaken(double now_s);
   void Failed(const std::string& what);

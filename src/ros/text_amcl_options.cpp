@@ -255,9 +255,15 @@ const ParamTable<O>& TextAmclParamTable() {
 }
 
 TextAmclNodeOptions TextAmclOptionsFrom(const ParamSource& source) {
-  const ParamTable<O>& table = TextAmclParamTable();
   O o;
-  ApplyParamTable(table, source, &o);
+  ApplyParamTable(TextAmclParamTable(), source, &o);
+  CheckTextAmclOptions(o, source);
+  o.building = LoadLocalizerBuilding(o, source);
+  return o;
+}
+
+void CheckTextAmclOptions(const TextAmclNodeOptions& o, const ParamSource& source) {
+  const ParamTable<O>& table = TextAmclParamTable();
   // Node-level rules (the core takes one beam selection and one frame-free session).
   const BeamSelectionOptions& beams = o.session.setup.likelihood_field.beams;
   if (beams.laser_min_range_m > 0.0 && beams.laser_max_range_m > 0.0 &&
@@ -283,8 +289,6 @@ TextAmclNodeOptions TextAmclOptionsFrom(const ParamSource& source) {
     (void)TextAmclSession(session, room, plates);
     ValidateFloorBeliefOptions(o.floor_belief);
   });
-  o.building = LoadLocalizerBuilding(o, source);
-  return o;
 }
 
 TextAmclNodeOptions LoadTextAmclOptions(const ros::NodeHandle& nh) { return TextAmclOptionsFrom(RosParamSource(nh)); }

@@ -70,6 +70,11 @@ const ParamTable<TextAmclNodeOptions>& TextAmclParamTable();
 // finite and > 0, got 0", "/amcl/odom_model_type must be 'diff' or 'diff-corrected', got omni". ROS-free.
 TextAmclNodeOptions TextAmclOptionsFrom(const ParamSource& source);
 
+// The rules between parameters (laser ranges, frames) and the whole set against the core, as
+// TextAmclOptionsFrom checks them after reading each value (also every dynamic_reconfigure request,
+// text_amcl_reconfigure.h). Throws ParameterError naming the parameters with their values.
+void CheckTextAmclOptions(const TextAmclNodeOptions& options, const ParamSource& source);
+
 // TextAmclOptionsFrom(the parameters under `private_nh`).
 TextAmclNodeOptions LoadTextAmclOptions(const ros::NodeHandle& private_nh);
 

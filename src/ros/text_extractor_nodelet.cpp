@@ -32,8 +32,9 @@ class TextExtractorNodelet : public nodelet::Nodelet {
     ros::NodeHandle& nh = getNodeHandle();
     ros::NodeHandle& pnh = getPrivateNodeHandle();
     try {
-      options_ = LoadTextExtractorOptions(pnh);
-      band_geometry_ = LoadBandGeometryOptions(pnh);
+      const TextExtractorNodeOptions node = LoadTextExtractorOptions(pnh);
+      options_ = node.extractor;
+      if (node.band_from_geometry) band_geometry_ = node.band_geometry;
       extractor_ = std::make_unique<TextExtractor>(options_);  // loads the Tesseract model
     } catch (const std::exception& e) {
       NODELET_FATAL("%s", e.what());

@@ -1,241 +1,318 @@
+// TextExtractorNodelet's parameter table and loader: every parameter once (name, field, default, rule, doc);
+// rules between fields are the core's (MserBandDetector, PlateTracker, ValidateOcrPreprocessOptions,
+// PlateReadingValidator, ValidateBandGeometryOptions).
 #include "text_extractor_options.h"
 
-#include <cmath>
 #include <fstream>
-#include <functional>
-#include <sstream>
+#include <optional>
 #include <stdexcept>
-
-#include <xmlrpcpp/XmlRpcValue.h>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "doorplate_localization/common/room_id.h"
+#include "doorplate_localization/text/mser_band_detector.h"
+#include "doorplate_localization/text/ocr_preprocess.h"
+#include "doorplate_localization/text/plate_reading_validator.h"
+#include "doorplate_localization/text/plate_tracker.h"
+#include "doorplate_localization/text/ppocr_recognizer.h"
+#include "doorplate_localization/text/tesseract_ocr.h"
 
 namespace doorplate_localization {
 namespace {
 
-// A range rule on a number and its wording for the error message.
-struct Rule {
-  std::function<bool(double)> ok;
-  std::string text;
-};
+using O = TextExtractorNodeOptions;
 
-std::string Num(double v) {
-  std::ostringstream out;
-  out << v;
-  return out.str();
+ParamRule Fraction01Open() {  // [0, 1)
+  return param_rules::Holds("in [0, 1)", [](double v) { return v >= 0.0 && v < 1.0; });
 }
-Rule AtLeast(double min) { return {[min](double v) { return v >= min; }, ">= " + Num(min)}; }
-Rule Above(double min) { return {[min](double v) { return v > min; }, "> " + Num(min)}; }
-Rule Closed(double lo, double hi) {
-  return {[lo, hi](double v) { return v >= lo && v <= hi; }, "in [" + Num(lo) + ", " + Num(hi) + "]"};
+ParamRule OpenUnit() {  // (0, 1)
+  return param_rules::Holds("in (0, 1)", [](double v) { return v > 0.0 && v < 1.0; });
+}
+ParamRule Grey() {
+  return param_rules::Holds("in [0, 255]", [](double v) { return v >= 0.0 && v <= 255.0; });
 }
 
-// The parameter's value (or `fallback`), finite and satisfying `rule`; else ParameterError naming it.
-template <typename T>
-T Read(const ros::NodeHandle& nh, const std::string& name, T fallback, const Rule& rule) {
-  const T value = ReadParam(nh, name, fallback);
-  RequireParam(std::isfinite(static_cast<double>(value)) && rule.ok(static_cast<double>(value)), nh, name,
-               rule.text, value);
-  return value;
+ParamTable<O> DetectorRows() {
+  namespace r = param_rules;
+  return {
+      Param<O>("detector/band/enabled", DOORPLATE_PARAM_FIELD(extractor.detector.band.enabled),
+               "search only the band of rows where plates appear; false: the whole image"),
+      Param<O>("detector/band/top_fraction", DOORPLATE_PARAM_FIELD(extractor.detector.band.top_fraction),
+               "band top row as a fraction of the image height", Fraction01Open()),
+      Param<O>("detector/band/bottom_fraction", DOORPLATE_PARAM_FIELD(extractor.detector.band.bottom_fraction),
+               "band bottom row as a fraction of the image height; > top_fraction", r::Probability()),
+      Param<O>("detector/band/top_px", DOORPLATE_PARAM_FIELD(extractor.detector.band.top_px),
+               "both >= 0: band rows [top_px, bottom_px) instead of the fractions; -1: unset",
+               r::Holds(">= -1", [](double v) { return v >= -1; })),
+      Param<O>("detector/band/bottom_px", DOORPLATE_PARAM_FIELD(extractor.detector.band.bottom_px),
+               "see top_px; > top_px", r::Holds(">= -1", [](double v) { return v >= -1; })),
+      Param<O>("detector/band_from_geometry", DOORPLATE_PARAM_FIELD(band_from_geometry),
+               "true: the band rows are computed from every `camera_info` (height, fy = K[4], cy = K[5]) and the "
+               "camera mount and plate ranges below (`BandFromGeometry`, text/band_geometry.h), so any resolution "
+               "or lens gets a fitting band; `~detector/band/*` are then unused"),
+      Param<O>("detector/band_geometry/camera_height_m", DOORPLATE_PARAM_FIELD(band_geometry.mount_height_m),
+               "optical centre above the floor (the simulator's `mount_height_m`)", r::Positive()),
+      Param<O>("detector/band_geometry/camera_pitch_up_deg", DOORPLATE_PARAM_FIELD(band_geometry.pitch_up_deg),
+               "upward tilt of the camera (the simulator's `pitch_deg`)",
+               r::Holds("in (-80, 80)", [](double v) { return v > -80.0 && v < 80.0; })),
+      Param<O>("detector/band_geometry/text_bottom_min_m", DOORPLATE_PARAM_FIELD(band_geometry.text_bottom_min_m),
+               "lowest bottom edge of plate text above the floor", r::Finite()),
+      Param<O>("detector/band_geometry/text_top_max_m", DOORPLATE_PARAM_FIELD(band_geometry.text_top_max_m),
+               "highest top edge of plate text above the floor; > text_bottom_min_m", r::Finite()),
+      Param<O>("detector/band_geometry/min_distance_m", DOORPLATE_PARAM_FIELD(band_geometry.min_distance_m),
+               "nearest wall distance along the optical axis at which plates are read", r::Positive()),
+      Param<O>("detector/band_geometry/max_distance_m", DOORPLATE_PARAM_FIELD(band_geometry.max_distance_m),
+               "farthest such distance; >= min_distance_m", r::Positive()),
+      Param<O>("detector/band_geometry/margin_px", DOORPLATE_PARAM_FIELD(band_geometry.margin_px),
+               "rows added above and below, then clipped to the image", r::NonNegative()),
+      Param<O>("detector/mser/delta", DOORPLATE_PARAM_FIELD(extractor.detector.mser.delta),
+               "cv::MSER delta; the fine delta and small areas find the 6-8 px glyphs of small grey-on-grey plates",
+               r::AtLeast(1)),
+      Param<O>("detector/mser/min_area_px", DOORPLATE_PARAM_FIELD(extractor.detector.mser.min_area_px),
+               "cv::MSER smallest region (band pixels)", r::AtLeast(1)),
+      Param<O>("detector/mser/max_area_px", DOORPLATE_PARAM_FIELD(extractor.detector.mser.max_area_px),
+               "cv::MSER largest region (band pixels); > min_area_px", r::AtLeast(1)),
+      Param<O>("detector/mser/max_variation", DOORPLATE_PARAM_FIELD(extractor.detector.mser.max_variation),
+               "cv::MSER max variation", r::Positive()),
+      Param<O>("detector/character/min_char_height_px",
+               DOORPLATE_PARAM_FIELD(extractor.detector.character.min_char_height_px), "glyph height range: lowest",
+               r::AtLeast(1)),
+      Param<O>("detector/character/max_char_height_px",
+               DOORPLATE_PARAM_FIELD(extractor.detector.character.max_char_height_px),
+               "glyph height range: highest; >= min_char_height_px", r::AtLeast(1)),
+      Param<O>("detector/character/min_char_aspect", DOORPLATE_PARAM_FIELD(extractor.detector.character.min_char_aspect),
+               "glyph width / height range: lowest", r::NonNegative()),
+      Param<O>("detector/character/max_char_aspect", DOORPLATE_PARAM_FIELD(extractor.detector.character.max_char_aspect),
+               "glyph width / height range: highest; >= min_char_aspect", r::NonNegative()),
+      Param<O>("detector/character/min_fill_ratio", DOORPLATE_PARAM_FIELD(extractor.detector.character.min_fill_ratio),
+               "region pixels / box area: lowest", r::Probability()),
+      Param<O>("detector/character/max_fill_ratio", DOORPLATE_PARAM_FIELD(extractor.detector.character.max_fill_ratio),
+               "region pixels / box area: highest; >= min_fill_ratio", r::Probability()),
+      Param<O>("detector/character/min_contrast_grey",
+               DOORPLATE_PARAM_FIELD(extractor.detector.character.min_contrast_grey),
+               "glyph vs. background grey difference", Grey()),
+      Param<O>("detector/grouping/max_nested_coverage",
+               DOORPLATE_PARAM_FIELD(extractor.detector.grouping.max_nested_coverage),
+               "a glyph this much inside a larger one is dropped (holes of 0, 4, 8...)",
+               r::Holds("in (0, 1]", [](double v) { return v > 0.0 && v <= 1.0; })),
+      Param<O>("detector/grouping/max_height_ratio", DOORPLATE_PARAM_FIELD(extractor.detector.grouping.max_height_ratio),
+               "neighbouring glyphs: taller / shorter height", r::Holds(">= 1", [](double v) { return v >= 1.0; })),
+      Param<O>("detector/grouping/max_center_offset_to_height",
+               DOORPLATE_PARAM_FIELD(extractor.detector.grouping.max_center_offset_to_height),
+               "neighbouring glyphs: vertical centre offset / height", r::NonNegative()),
+      Param<O>("detector/grouping/max_gap_to_height",
+               DOORPLATE_PARAM_FIELD(extractor.detector.grouping.max_gap_to_height),
+               "neighbouring glyphs: horizontal gap / height (bridges a printed `-` or `.`, too small to be a "
+               "glyph, also on thin widely spaced faces)",
+               r::NonNegative()),
+      Param<O>("detector/grouping/max_ink_difference_grey",
+               DOORPLATE_PARAM_FIELD(extractor.detector.grouping.max_ink_difference_grey),
+               "neighbouring glyphs: ink grey difference", Grey()),
+      Param<O>("detector/grouping/min_chars_per_line",
+               DOORPLATE_PARAM_FIELD(extractor.detector.grouping.min_chars_per_line), "glyphs a text line needs",
+               r::AtLeast(1)),
+      Param<O>("detector/grouping/min_line_aspect", DOORPLATE_PARAM_FIELD(extractor.detector.grouping.min_line_aspect),
+               "text line width / height range: lowest", r::NonNegative()),
+      Param<O>("detector/grouping/max_line_aspect", DOORPLATE_PARAM_FIELD(extractor.detector.grouping.max_line_aspect),
+               "text line width / height range: highest; >= min_line_aspect", r::NonNegative()),
+      Param<O>("detector/box_padding_to_height", DOORPLATE_PARAM_FIELD(extractor.detector.box_padding_to_height),
+               "padding on each side of a line for the OCR, fraction of its height", r::NonNegative()),
+      Param<O>("detector/reference_width_px", DOORPLATE_PARAM_FIELD(extractor.detector.reference_width_px),
+               "the MSER areas and character heights above are for an image this wide and scale with the image "
+               "width (areas with its square), so a 1280 x 720 camera with the same field of view needs no other "
+               "change; 0: no scaling",
+               r::AtLeast(0)),
+      Param<O>("detector/nms_enabled", DOORPLATE_PARAM_FIELD(extractor.detector.nms_enabled),
+               "non-maximum suppression of overlapping lines"),
+      Param<O>("detector/nms_max_iou", DOORPLATE_PARAM_FIELD(extractor.detector.nms_max_iou),
+               "lines overlapping more (intersection over union) are suppressed", r::Probability()),
+  };
 }
 
-std::vector<std::string> ReadStringList(const ros::NodeHandle& nh, const std::string& name) {
-  if (!nh.hasParam(name)) return {};
-  XmlRpc::XmlRpcValue list;
-  nh.getParam(name, list);
-  const std::string rule = " must be a list of strings (quote room numbers: ['201', '202A'])";
-  if (list.getType() != XmlRpc::XmlRpcValue::TypeArray) throw ParameterError(nh.resolveName(name) + rule);
-  std::vector<std::string> out;
-  for (int i = 0; i < list.size(); ++i) {
-    if (list[i].getType() != XmlRpc::XmlRpcValue::TypeString) {
-      throw ParameterError(nh.resolveName(name) + rule + "; entry " + std::to_string(i) + " is not");
-    }
-    out.push_back(static_cast<std::string>(list[i]));
-  }
-  return out;
+ParamTable<O> ModelRows() {
+  namespace r = param_rules;
+  return {
+      Param<O>("max_regions_per_frame", DOORPLATE_PARAM_FIELD(extractor.max_regions_per_frame),
+               "at most this many text boxes per image go to the OCR (largest first)", r::AtLeast(1)),
+      EnumParam<O>("detector_type", DOORPLATE_PARAM_FIELD(extractor.detector_type),
+                   {{"mser", TextDetectorType::kMser}, {"db", TextDetectorType::kDb}},
+                   "text detector: `mser` (MSER in the band, fast: the paper's) or `db` (the learned PP-OCRv4 DB "
+                   "detector, text/db_text_detector.h: text of any size and polarity in clutter, ~0.5 s a frame on "
+                   "one core; for still images and slow cameras)"),
+      EnumParam<O>("recognizer_type", DOORPLATE_PARAM_FIELD(extractor.recognizer_type),
+                   {{"tesseract", TextRecognizerType::kTesseract}, {"ppocr", TextRecognizerType::kPpOcr}},
+                   "recogniser: `tesseract` (Debian's LSTM model) or `ppocr` (the learned PP-OCRv4 recogniser, "
+                   "ppocr_recognizer.h: reads real signs far better, ~20-100 ms a crop). The learned models come "
+                   "from `scripts/fetch_ocr_models.sh`; choosing one that is not installed stops the nodelet, "
+                   "naming the missing file. Side by side: docs/results/real-photos.md"),
+      ConvertedParam<O, std::string>(
+          "model_dir", "extractor.db_detector.model_dir, extractor.ppocr.model_dir",
+          [](const O& o) { return o.extractor.db_detector.model_dir; },
+          [](O& o, const std::string& dir) { o.extractor.db_detector.model_dir = o.extractor.ppocr.model_dir = dir; },
+          "folder of the learned models; empty: `$DOORPLATE_OCR_MODEL_DIR`, else "
+          "/usr/local/share/doorplate_localization/ocr_models"),
+      Param<O>("db/target_short_side_px", DOORPLATE_PARAM_FIELD(extractor.db_detector.target_short_side_px),
+               "the searched rows are scaled so their short side is this, then padded to multiples of 32",
+               r::AtLeast(32)),
+      Param<O>("db/max_input_side_px", DOORPLATE_PARAM_FIELD(extractor.db_detector.max_input_side_px),
+               "... and their long side at most this; >= target_short_side_px", r::AtLeast(32)),
+      Param<O>("db/binary_threshold", DOORPLATE_PARAM_FIELD(extractor.db_detector.binary_threshold),
+               "DB: text-probability threshold of the mask", OpenUnit()),
+      Param<O>("db/box_threshold", DOORPLATE_PARAM_FIELD(extractor.db_detector.box_threshold),
+               "DB: mean probability a box needs", OpenUnit()),
+      Param<O>("db/unclip_ratio", DOORPLATE_PARAM_FIELD(extractor.db_detector.unclip_ratio),
+               "DB: box growth around the shrunk text kernel", r::Positive()),
+      Param<O>("db/min_box_side_px", DOORPLATE_PARAM_FIELD(extractor.db_detector.min_box_side_px),
+               "DB: smallest box side (image px)", r::AtLeast(1)),
+      Param<O>("ppocr/allowed_characters", DOORPLATE_PARAM_FIELD(extractor.ppocr.allowed_characters),
+               "characters the learned recogniser may output (lower case is folded to upper case; `·` comes out "
+               "as `.`); empty: any of its dictionary"),
+      Param<O>("ppocr/min_confidence", DOORPLATE_PARAM_FIELD(extractor.ppocr.min_confidence),
+               "readings with a lower mean character probability are not validated (a pictogram read as a digit "
+               "scores ~0.3-0.4)",
+               r::Probability()),
+      Param<O>("ocr/min_confidence", DOORPLATE_PARAM_FIELD(extractor.ocr.min_confidence),
+               "the same for Tesseract (its confidence is poorly calibrated on single lines: 0 lets the validator "
+               "and the vote decide)",
+               r::Probability()),
+      Param<O>("ocr/tessdata_dir", DOORPLATE_PARAM_FIELD(extractor.ocr.tessdata_dir),
+               "folder of `<language>.traineddata`; empty: `$TESSDATA_PREFIX`, else Debian's "
+               "/usr/share/tesseract-ocr/5/tessdata. A missing model stops the nodelet, naming the path"),
+      Param<O>("ocr/language", DOORPLATE_PARAM_FIELD(extractor.ocr.language), "Tesseract model",
+               {"a Tesseract language name such as eng",
+                [](const ParamValue& v) { return !std::get<std::string>(v).empty(); }}),
+      EnumParam<O>("ocr/line_mode", DOORPLATE_PARAM_FIELD(extractor.ocr.line_mode),
+                   {{"single_line", OcrLineMode::kSingleLine}, {"single_word", OcrLineMode::kSingleWord}},
+                   "Tesseract page segmentation"),
+      Param<O>("ocr/whitelist", DOORPLATE_PARAM_FIELD(extractor.ocr.whitelist),
+               "characters Tesseract may output; \"\" = any"),
+      Param<O>("ocr/preprocess/target_text_height_px",
+               DOORPLATE_PARAM_FIELD(extractor.ocr.preprocess.target_text_height_px),
+               "glyph height the crop is scaled to", r::AtLeast(8)),
+      Param<O>("ocr/preprocess/border_px", DOORPLATE_PARAM_FIELD(extractor.ocr.preprocess.border_px),
+               "white margin around the binarized crop", r::AtLeast(0)),
+      Param<O>("ocr/preprocess/min_text_height_px", DOORPLATE_PARAM_FIELD(extractor.ocr.preprocess.min_text_height_px),
+               "shorter glyphs are not read", r::AtLeast(1)),
+      Param<O>("ocr/preprocess/ink_thinning_px", DOORPLATE_PARAM_FIELD(extractor.ocr.preprocess.ink_thinning_px),
+               "ink eroded by this many pixels after the rescale (Otsu makes blurred strokes bold: a \"3\" reads as "
+               "\"5\"); 0: none",
+               r::AtLeast(0)),
+  };
 }
 
-void ReadDetector(const ros::NodeHandle& nh, MserBandDetectorOptions& d) {
-  BandOptions& b = d.band;
-  b.enabled = ReadParam(nh, "detector/band/enabled", b.enabled);
-  b.top_fraction = Read(nh, "detector/band/top_fraction", b.top_fraction,
-                        {[](double v) { return v >= 0.0 && v < 1.0; }, "in [0, 1)"});
-  b.bottom_fraction = Read(nh, "detector/band/bottom_fraction", b.bottom_fraction, Closed(0.0, 1.0));
-  b.top_px = Read(nh, "detector/band/top_px", b.top_px, AtLeast(-1));
-  b.bottom_px = Read(nh, "detector/band/bottom_px", b.bottom_px, AtLeast(-1));
-  RequireParam((b.top_px >= 0) == (b.bottom_px >= 0), nh, "detector/band/bottom_px",
-               "set (>= 0) together with detector/band/top_px, or both -1", b.bottom_px);
-  if (b.top_px >= 0) {
-    RequireParam(b.bottom_px > b.top_px, nh, "detector/band/bottom_px", "> detector/band/top_px", b.bottom_px);
-  } else {
-    RequireParam(b.bottom_fraction > b.top_fraction, nh, "detector/band/bottom_fraction",
-                 "> detector/band/top_fraction", b.bottom_fraction);
-  }
-  MserOptions& m = d.mser;
-  m.delta = Read(nh, "detector/mser/delta", m.delta, AtLeast(1));
-  m.min_area_px = Read(nh, "detector/mser/min_area_px", m.min_area_px, AtLeast(1));
-  m.max_area_px = Read(nh, "detector/mser/max_area_px", m.max_area_px, Above(m.min_area_px));
-  m.max_variation = Read(nh, "detector/mser/max_variation", m.max_variation, Above(0.0));
-  CharacterFilterOptions& c = d.character;
-  c.min_char_height_px = Read(nh, "detector/character/min_char_height_px", c.min_char_height_px, AtLeast(1));
-  c.max_char_height_px =
-      Read(nh, "detector/character/max_char_height_px", c.max_char_height_px, AtLeast(c.min_char_height_px));
-  c.min_char_aspect = Read(nh, "detector/character/min_char_aspect", c.min_char_aspect, AtLeast(0.0));
-  c.max_char_aspect = Read(nh, "detector/character/max_char_aspect", c.max_char_aspect, AtLeast(c.min_char_aspect));
-  c.min_fill_ratio = Read(nh, "detector/character/min_fill_ratio", c.min_fill_ratio, Closed(0.0, 1.0));
-  c.max_fill_ratio =
-      Read(nh, "detector/character/max_fill_ratio", c.max_fill_ratio, Closed(c.min_fill_ratio, 1.0));
-  c.min_contrast_grey = Read(nh, "detector/character/min_contrast_grey", c.min_contrast_grey, Closed(0.0, 255.0));
-  LineGroupingOptions& g = d.grouping;
-  g.max_nested_coverage = Read(nh, "detector/grouping/max_nested_coverage", g.max_nested_coverage,
-                               {[](double v) { return v > 0.0 && v <= 1.0; }, "in (0, 1]"});
-  g.max_height_ratio = Read(nh, "detector/grouping/max_height_ratio", g.max_height_ratio, AtLeast(1.0));
-  g.max_center_offset_to_height =
-      Read(nh, "detector/grouping/max_center_offset_to_height", g.max_center_offset_to_height, AtLeast(0.0));
-  g.max_gap_to_height = Read(nh, "detector/grouping/max_gap_to_height", g.max_gap_to_height, AtLeast(0.0));
-  g.max_ink_difference_grey =
-      Read(nh, "detector/grouping/max_ink_difference_grey", g.max_ink_difference_grey, Closed(0.0, 255.0));
-  g.min_chars_per_line = Read(nh, "detector/grouping/min_chars_per_line", g.min_chars_per_line, AtLeast(1));
-  g.min_line_aspect = Read(nh, "detector/grouping/min_line_aspect", g.min_line_aspect, AtLeast(0.0));
-  g.max_line_aspect = Read(nh, "detector/grouping/max_line_aspect", g.max_line_aspect, AtLeast(g.min_line_aspect));
-  d.box_padding_to_height = Read(nh, "detector/box_padding_to_height", d.box_padding_to_height, AtLeast(0.0));
-  d.reference_width_px = Read(nh, "detector/reference_width_px", d.reference_width_px, AtLeast(0));
-  d.nms_enabled = ReadParam(nh, "detector/nms_enabled", d.nms_enabled);
-  d.nms_max_iou = Read(nh, "detector/nms_max_iou", d.nms_max_iou, Closed(0.0, 1.0));
+ParamTable<O> ValidatorAndTrackerRows() {
+  namespace r = param_rules;
+  return {
+      Param<O>("room_pattern", DOORPLATE_PARAM_FIELD(extractor.validator.pattern),
+               "the building's room identifier format: ECMAScript regex the canonical form of a reading must match "
+               "(separators `-` `.` `·` `/` and spaces removed, letters upper-cased; docs/text-map-format.md). The "
+               "default accepts `16-186`, `E14-295`, `32-069T`, `B/1404`, `39.A`, `3.21`, `B2.114`, `76·100SC`, "
+               "`21/52`, `5`, `5D`, `102A` and refuses words without digits. Set it to the building's format, the "
+               "`room_pattern` of its text map")
+          .Deprecated("validator/pattern"),
+      Param<O>("validator/max_edit_distance", DOORPLATE_PARAM_FIELD(extractor.validator.max_edit_distance),
+               "a reading this close (Levenshtein) to exactly one of `~validator/known_rooms` becomes that room",
+               r::AtLeast(0)),
+      Param<O>("tracker/max_center_jump_px", DOORPLATE_PARAM_FIELD(extractor.tracker.max_center_jump_px),
+               "a box joins a track if its centre is this close to the predicted one", r::Positive()),
+      Param<O>("tracker/max_vertical_offset_to_height",
+               DOORPLATE_PARAM_FIELD(extractor.tracker.max_vertical_offset_to_height),
+               "... and its vertical offset / height is below this", r::NonNegative()),
+      Param<O>("tracker/max_height_ratio", DOORPLATE_PARAM_FIELD(extractor.tracker.max_height_ratio),
+               "... and taller / shorter height is below this", r::Holds(">= 1", [](double v) { return v >= 1.0; })),
+      Param<O>("tracker/max_missed_frames", DOORPLATE_PARAM_FIELD(extractor.tracker.max_missed_frames),
+               "a track unseen for more processed frames is dropped", r::AtLeast(0)),
+      Param<O>("tracker/min_voted_frames", DOORPLATE_PARAM_FIELD(extractor.tracker.min_voted_frames),
+               "a plate is reported only with this many frames of valid readings", r::AtLeast(1)),
+      Param<O>("tracker/read_every_n_frames", DOORPLATE_PARAM_FIELD(extractor.tracker.read_every_n_frames),
+               "reading schedule (`PlateTracker::PlanReadings`): a track is read every n-th frame. Unset, the "
+               "schedule follows `~recognizer_type` (`UseReadingScheduleFor`): the slow learned recogniser pays "
+               "its cost a few times per plate instead of every frame",
+               r::AtLeast(1))
+          .DefaultText("1 (ppocr: 3)"),
+      Param<O>("tracker/max_readings_per_track", DOORPLATE_PARAM_FIELD(extractor.tracker.max_readings_per_track),
+               "reading schedule: at most this many reads of a track (0: no limit); unset: by `~recognizer_type`",
+               r::AtLeast(0))
+          .DefaultText("0 (ppocr: 8)"),
+      Param<O>("tracker/enough_votes", DOORPLATE_PARAM_FIELD(extractor.tracker.enough_votes),
+               "reading schedule: a track whose leading room has this many valid readings is not read again (0: "
+               "never enough); unset: by `~recognizer_type`",
+               r::AtLeast(0))
+          .DefaultText("0 (ppocr: 3)"),
+  };
 }
 
-void ReadOcr(const ros::NodeHandle& nh, TesseractOcrOptions& o) {
-  o.tessdata_dir = ReadParam(nh, "ocr/tessdata_dir", o.tessdata_dir);
-  o.language = ReadParam(nh, "ocr/language", o.language);
-  RequireParam(!o.language.empty(), nh, "ocr/language", "a Tesseract language name such as eng", "''");
-  const std::string mode = ReadParam(nh, "ocr/line_mode", std::string("single_line"));
-  RequireParam(mode == "single_line" || mode == "single_word", nh, "ocr/line_mode",
-               "'single_line' or 'single_word'", mode);
-  o.line_mode = mode == "single_word" ? OcrLineMode::kSingleWord : OcrLineMode::kSingleLine;
-  o.whitelist = ReadParam(nh, "ocr/whitelist", o.whitelist);
-  OcrPreprocessOptions& p = o.preprocess;
-  p.target_text_height_px = Read(nh, "ocr/preprocess/target_text_height_px", p.target_text_height_px, AtLeast(8));
-  p.border_px = Read(nh, "ocr/preprocess/border_px", p.border_px, AtLeast(0));
-  p.min_text_height_px = Read(nh, "ocr/preprocess/min_text_height_px", p.min_text_height_px, AtLeast(1));
-  p.ink_thinning_px = Read(nh, "ocr/preprocess/ink_thinning_px", p.ink_thinning_px, AtLeast(0));
-  const std::string model = ResolveTessdataDir(o) + "/" + o.language + ".traineddata";
+// The Tesseract model always (the extractor falls back to it), the learned ones when chosen.
+void RequireModels(const O& o, const ParamSource& source) {
+  const TextExtractorOptions& e = o.extractor;
+  const std::string model = ResolveTessdataDir(e.ocr) + "/" + e.ocr.language + ".traineddata";
   if (!std::ifstream(model).good()) {
-    throw ParameterError(nh.resolveName("ocr/tessdata_dir") + " = '" + o.tessdata_dir + "' and " +
-                         nh.resolveName("ocr/language") + " = '" + o.language + "': Tesseract model " + model +
+    throw ParameterError(source.Resolve("ocr/tessdata_dir") + " = '" + e.ocr.tessdata_dir + "' and " +
+                         source.Resolve("ocr/language") + " = '" + e.ocr.language + "': Tesseract model " + model +
                          " not found (empty tessdata_dir: $TESSDATA_PREFIX, else Debian's tesseract-ocr-" +
-                         o.language + " folder)");
+                         e.ocr.language + " folder)");
   }
-}
-
-// ~detector_type / ~recognizer_type and the learned models' options (db_text_detector.h,
-// ppocr_recognizer.h). A learned model that is chosen must be installed: checked here, naming the file.
-void ReadModels(const ros::NodeHandle& nh, TextExtractorOptions& o) {
-  const std::string detector = ReadParam(nh, "detector_type", ToString(o.detector_type));
-  const std::string recognizer = ReadParam(nh, "recognizer_type", ToString(o.recognizer_type));
-  try {
-    o.detector_type = ParseTextDetectorType(detector, nh.resolveName("detector_type"));
-    o.recognizer_type = ParseTextRecognizerType(recognizer, nh.resolveName("recognizer_type"));
-  } catch (const std::invalid_argument& e) {
-    throw ParameterError(e.what());
+  const bool ppocr = e.recognizer_type == TextRecognizerType::kPpOcr;
+  if (e.detector_type != TextDetectorType::kDb && !ppocr) return;
+  const std::string probe = ResolveOcrModelDir(e.ppocr.model_dir) + (ppocr ? "/ppocrv4_rec_dict.txt" : "/ppocrv4_det.onnx");
+  if (!std::ifstream(probe).good()) {
+    throw ParameterError(source.Resolve("detector_type") + " = '" + ToString(e.detector_type) + "', " +
+                         source.Resolve("recognizer_type") + " = '" + ToString(e.recognizer_type) +
+                         "' need the learned models, but " + probe + " is not there (" + source.Resolve("model_dir") +
+                         " = '" + e.ppocr.model_dir + "'; install them with scripts/fetch_ocr_models.sh)");
   }
-  const std::string model_dir = ReadParam(nh, "model_dir", std::string());
-  o.db_detector.model_dir = o.ppocr.model_dir = model_dir;
-  DbTextDetectorOptions& d = o.db_detector;
-  d.target_short_side_px = Read(nh, "db/target_short_side_px", d.target_short_side_px, AtLeast(32));
-  d.max_input_side_px = Read(nh, "db/max_input_side_px", d.max_input_side_px, AtLeast(d.target_short_side_px));
-  d.binary_threshold = Read(nh, "db/binary_threshold", d.binary_threshold,
-                            {[](double v) { return v > 0.0 && v < 1.0; }, "in (0, 1)"});
-  d.box_threshold = Read(nh, "db/box_threshold", d.box_threshold,
-                         {[](double v) { return v > 0.0 && v < 1.0; }, "in (0, 1)"});
-  d.unclip_ratio = Read(nh, "db/unclip_ratio", d.unclip_ratio, Above(0.0));
-  d.min_box_side_px = Read(nh, "db/min_box_side_px", d.min_box_side_px, AtLeast(1));
-  PpOcrRecognizerOptions& r = o.ppocr;
-  r.allowed_characters = ReadParam(nh, "ppocr/allowed_characters", r.allowed_characters);
-  r.min_confidence = Read(nh, "ppocr/min_confidence", r.min_confidence, Closed(0.0, 1.0));
-  o.ocr.min_confidence = Read(nh, "ocr/min_confidence", o.ocr.min_confidence, Closed(0.0, 1.0));
-  const std::string dir = ResolveOcrModelDir(model_dir);
-  const bool wants_models = o.detector_type == TextDetectorType::kDb ||
-                            o.recognizer_type == TextRecognizerType::kPpOcr;
-  const std::string probe = dir + (o.recognizer_type == TextRecognizerType::kPpOcr ? "/ppocrv4_rec_dict.txt"
-                                                                                  : "/ppocrv4_det.onnx");
-  if (wants_models && !std::ifstream(probe).good()) {
-    throw ParameterError(nh.resolveName("detector_type") + " = '" + detector + "', " +
-                         nh.resolveName("recognizer_type") + " = '" + recognizer + "' need the learned models, but " +
-                         probe + " is not there (" + nh.resolveName("model_dir") + " = '" + model_dir +
-                         "'; install them with scripts/fetch_ocr_models.sh)");
-  }
-}
-
-void ReadValidator(const ros::NodeHandle& nh, PlateReadingValidatorOptions& v) {
-  // ~room_pattern (the name the mapping nodelet shares); ~validator/pattern is its older name.
-  if (nh.hasParam("room_pattern") && nh.hasParam("validator/pattern")) {
-    throw ParameterError(nh.resolveName("room_pattern") + " and " + nh.resolveName("validator/pattern") +
-                         " are the same option (the older name): set only one");
-  }
-  const std::string name = nh.hasParam("validator/pattern") ? "validator/pattern" : "room_pattern";
-  v.pattern = ReadParam(nh, name, v.pattern);
-  try {
-    RoomIdGrammar check(v.pattern);
-  } catch (const std::invalid_argument& e) {
-    throw ParameterError(nh.resolveName(name) + " must be an ECMAScript regex of the building's room numbers "
-                         "(canonical form, docs/text-map-format.md), got '" + v.pattern + "': " + e.what());
-  }
-  v.known_rooms = ReadStringList(nh, "validator/known_rooms");
-  v.max_edit_distance = Read(nh, "validator/max_edit_distance", v.max_edit_distance, AtLeast(0));
-  try {
-    PlateReadingValidator check(v);  // every known room must match the pattern
-  } catch (const std::invalid_argument& e) {
-    throw ParameterError(nh.resolveName("validator/known_rooms") + ": " + e.what());
-  }
-}
-
-void ReadTracker(const ros::NodeHandle& nh, PlateTrackerOptions& t) {
-  t.max_center_jump_px = Read(nh, "tracker/max_center_jump_px", t.max_center_jump_px, Above(0.0));
-  t.max_vertical_offset_to_height =
-      Read(nh, "tracker/max_vertical_offset_to_height", t.max_vertical_offset_to_height, AtLeast(0.0));
-  t.max_height_ratio = Read(nh, "tracker/max_height_ratio", t.max_height_ratio, AtLeast(1.0));
-  t.max_missed_frames = Read(nh, "tracker/max_missed_frames", t.max_missed_frames, AtLeast(0));
-  t.min_voted_frames = Read(nh, "tracker/min_voted_frames", t.min_voted_frames, AtLeast(1));
-  t.read_every_n_frames = Read(nh, "tracker/read_every_n_frames", t.read_every_n_frames, AtLeast(1));
-  t.max_readings_per_track = Read(nh, "tracker/max_readings_per_track", t.max_readings_per_track, AtLeast(0));
-  t.enough_votes = Read(nh, "tracker/enough_votes", t.enough_votes, AtLeast(0));
 }
 
 }  // namespace
 
-std::optional<BandGeometryOptions> LoadBandGeometryOptions(const ros::NodeHandle& nh) {
-  if (!ReadParam(nh, "detector/band_from_geometry", false)) return std::nullopt;
-  BandGeometryOptions g;
-  const std::string p = "detector/band_geometry/";
-  g.mount_height_m = Read(nh, p + "camera_height_m", g.mount_height_m, Above(0.0));
-  g.pitch_up_deg = Read(nh, p + "camera_pitch_up_deg", g.pitch_up_deg, Closed(-80.0, 80.0));
-  g.text_bottom_min_m = Read(nh, p + "text_bottom_min_m", g.text_bottom_min_m, AtLeast(0.0));
-  g.text_top_max_m = Read(nh, p + "text_top_max_m", g.text_top_max_m, Above(g.text_bottom_min_m));
-  g.min_distance_m = Read(nh, p + "min_distance_m", g.min_distance_m, Above(0.0));
-  g.max_distance_m = Read(nh, p + "max_distance_m", g.max_distance_m, AtLeast(g.min_distance_m));
-  g.margin_px = Read(nh, p + "margin_px", g.margin_px, AtLeast(0.0));
-  return g;
+const ParamTable<TextExtractorNodeOptions>& TextExtractorParamTable() {
+  static const ParamTable<O> table = [] {
+    ParamTable<O> t = ModelRows();
+    for (ParamTable<O> part : {DetectorRows(), ValidatorAndTrackerRows()}) t.insert(t.end(), part.begin(), part.end());
+    return t;
+  }();
+  return table;
 }
 
-TextExtractorOptions LoadTextExtractorOptions(const ros::NodeHandle& nh) {
-  TextExtractorOptions o;
-  ReadDetector(nh, o.detector);
-  ReadOcr(nh, o.ocr);
-  ReadModels(nh, o);
-  ReadValidator(nh, o.validator);
-  UseReadingScheduleFor(o.recognizer_type, &o.tracker);  // the recogniser's schedule; parameters override it
-  ReadTracker(nh, o.tracker);
-  // 0 is legal for the core but would make a node that never reads anything.
-  o.max_regions_per_frame = Read(nh, "max_regions_per_frame", o.max_regions_per_frame, AtLeast(1));
-  // The core's own checks, in case they grow stricter than the rules above (cheap: no model is loaded).
-  try {
-    MserBandDetector detector(o.detector);
-    PlateTracker tracker(o.tracker);
-    ValidateOcrPreprocessOptions(o.ocr.preprocess);
-  } catch (const std::invalid_argument& e) {
-    throw ParameterError(nh.resolveName("") + ": " + e.what());
+TextExtractorNodeOptions TextExtractorOptionsFrom(const ParamSource& source) {
+  const ParamTable<O>& table = TextExtractorParamTable();
+  O o;
+  ApplyParamTable(table, source, &o);
+  if (std::optional<std::vector<std::string>> rooms = source.GetStringList("validator/known_rooms")) {
+    o.extractor.validator.known_rooms = std::move(*rooms);
   }
+  // The recogniser's reading schedule, for the fields the parameters leave unset.
+  PlateTrackerOptions schedule = o.extractor.tracker;
+  UseReadingScheduleFor(o.extractor.recognizer_type, &schedule);
+  PlateTrackerOptions& t = o.extractor.tracker;
+  if (!source.Has("tracker/read_every_n_frames")) t.read_every_n_frames = schedule.read_every_n_frames;
+  if (!source.Has("tracker/max_readings_per_track")) t.max_readings_per_track = schedule.max_readings_per_track;
+  if (!source.Has("tracker/enough_votes")) t.enough_votes = schedule.enough_votes;
+  CheckWithCore(table, o, source, [&o] {
+    (void)MserBandDetector(o.extractor.detector);
+    (void)PlateTracker(o.extractor.tracker);
+    ValidateOcrPreprocessOptions(o.extractor.ocr.preprocess);
+    if (o.extractor.db_detector.max_input_side_px < o.extractor.db_detector.target_short_side_px) {
+      throw std::invalid_argument("DbTextDetectorOptions.max_input_side_px must be >= target_short_side_px");
+    }
+    if (o.band_from_geometry) ValidateBandGeometryOptions(o.band_geometry);
+  });
+  try {  // the pattern is a regex and every known room must match it
+    PlateReadingValidator check(o.extractor.validator);
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    const bool rooms = what.find("known_rooms") != std::string::npos;
+    throw ParameterError((rooms ? source.Resolve("validator/known_rooms")
+                                : source.Resolve(source.Has("validator/pattern") ? "validator/pattern" : "room_pattern")) +
+                         ": " + what);
+  }
+  RequireModels(o, source);
   return o;
+}
+
+TextExtractorNodeOptions LoadTextExtractorOptions(const ros::NodeHandle& nh) {
+  return TextExtractorOptionsFrom(RosParamSource(nh));
 }
 
 }  // namespace doorplate_localization

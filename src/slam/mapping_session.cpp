@@ -1,6 +1,7 @@
 // MappingSession: the rules are listed in mapping_session.h; each is applied here, in one place.
 #include "doorplate_localization/slam/mapping_session.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -59,17 +60,37 @@ MappingUpdate MappingSession::AddScan(double stamp_s, const Pose2D& base_in_odom
   last_scan_stamp_s_ = stamp_s;
   scans_.push_back({stamp_s, scan});
   while (scans_.size() > 1 && scans_.front().stamp_s < stamp_s - options_.scan_history_s) scans_.pop_front();
-  if (!update.scan_processed) return update;
-  ++counters_.scans_processed;
-  last_processed_stamp_s_ = stamp_s;
-  processed_scan_indices_.push_back(index);
-  if (options_.map_update_interval_s > 0 &&
-      (!last_solve_stamp_s_ || stamp_s - *last_solve_stamp_s_ >= options_.map_update_interval_s)) {
-    const MappingUpdate solved = Solve();
-    update.solved = solved.solved;
+  if (update.scan_processed) {
+    ++counters_.scans_processed;
+    last_processed_stamp_s_ = stamp_s;
+    processed_scan_indices_.push_back(index);
+    if (options_.map_update_interval_s > 0 &&
+        (!last_solve_stamp_s_ || stamp_s - *last_solve_stamp_s_ >= options_.map_update_interval_s)) {
+      const MappingUpdate solved = Solve();
+      update.solved = solved.solved;
+    }
   }
-  RefreshMapToOdom(&update);
+  // Held sightings this scan decides: a scan at or after their stamp has now arrived. Applied in stamp order
+  // (their arrival order is kept among equal stamps).
+  std::vector<HeldPlate> due;
+  for (auto it = held_.begin(); it != held_.end();) {
+    if (it->stamp_s <= stamp_s) {
+      due.push_back(std::move(*it));
+      it = held_.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  std::stable_sort(due.begin(), due.end(), [](const HeldPlate& a, const HeldPlate& b) { return a.stamp_s < b.stamp_s; });
+  for (const HeldPlate& h : due) ApplyPlate(h.stamp_s, h.base_in_odom, h.sighting, &update);
+  if (update.scan_processed || !due.empty()) RefreshMapToOdom(&update);
   return update;
+}
+
+bool MappingSession::ScanMayStillCome(double stamp_s) const {
+  if (scans_.empty()) return true;
+  if (scans_.back().stamp_s >= stamp_s) return false;  // received scans are in stamp order: none newer to come
+  return stamp_s - scans_.back().stamp_s > options_.plate_range_max_scan_age_s;
 }
 
 std::optional<double> MappingSession::RangeFor(double stamp_s, double bearing_rad, std::string* why) const {
@@ -105,20 +126,38 @@ MappingUpdate MappingSession::AddPlates(double stamp_s, const Pose2D& base_in_od
   bool used = false;
   for (const PlateSighting& given : sightings) {
     ++counters_.plate_sightings;
-    MappingPlateOutcome outcome;
-    outcome.stamp_s = stamp_s;
-    outcome.sighting = given;
-    std::string no_range_why;
-    if (!given.range_m) outcome.sighting.range_m = RangeFor(stamp_s, given.bearing_rad, &no_range_why);
-    outcome.result = slam_.AddPlate(outcome.sighting, base_in_odom);
-    if (outcome.result.outcome == PlateOutcome::kNoRange && !no_range_why.empty()) {
-      outcome.result.reason = "no range: " + no_range_why;
+    if (!given.range_m && ScanMayStillCome(stamp_s)) {
+      if (held_.size() >= kMaxHeldPlates) {  // bounded: the oldest waits no longer
+        const HeldPlate oldest = held_.front();
+        held_.pop_front();
+        used = ApplyPlate(oldest.stamp_s, oldest.base_in_odom, oldest.sighting, &update) || used;
+      }
+      held_.push_back({stamp_s, base_in_odom, given});
+      ++counters_.plates_held;
+      ++update.plates_held;
+      continue;
     }
-    if (outcome.result.used()) ++counters_.plates_used, used = true;
-    update.plates.push_back(std::move(outcome));
+    used = ApplyPlate(stamp_s, base_in_odom, given, &update) || used;
   }
   if (used) RefreshMapToOdom(&update);
   return update;
+}
+
+bool MappingSession::ApplyPlate(double stamp_s, const Pose2D& base_in_odom, const PlateSighting& given,
+                                MappingUpdate* update) {
+  MappingPlateOutcome outcome;
+  outcome.stamp_s = stamp_s;
+  outcome.sighting = given;
+  std::string no_range_why;
+  if (!given.range_m) outcome.sighting.range_m = RangeFor(stamp_s, given.bearing_rad, &no_range_why);
+  outcome.result = slam_.AddPlate(outcome.sighting, base_in_odom);
+  if (outcome.result.outcome == PlateOutcome::kNoRange && !no_range_why.empty()) {
+    outcome.result.reason = "no range: " + no_range_why;
+  }
+  const bool used = outcome.result.used();
+  if (used) ++counters_.plates_used;
+  update->plates.push_back(std::move(outcome));
+  return used;
 }
 
 MappingUpdate MappingSession::Solve() {

@@ -25,10 +25,7 @@ bool RowOfWallPoint(const BandGeometryOptions& o, double height_m, double distan
   return true;
 }
 
-BandOptions BandFromGeometry(const BandGeometryOptions& o) {
-  Require(o.image_height_px > 0, "image_height_px must be > 0, got " + std::to_string(o.image_height_px));
-  Require(std::isfinite(o.fy_px) && o.fy_px > 0.0, "fy_px must be finite and > 0, got " + std::to_string(o.fy_px));
-  Require(std::isfinite(o.cy_px), "cy_px must be finite");
+void ValidateBandGeometryOptions(const BandGeometryOptions& o) {
   Require(std::isfinite(o.mount_height_m) && o.mount_height_m > 0.0, "mount_height_m must be finite and > 0");
   Require(std::isfinite(o.pitch_up_deg) && std::fabs(o.pitch_up_deg) < 80.0, "pitch_up_deg must be within ±80");
   Require(std::isfinite(o.text_bottom_min_m) && std::isfinite(o.text_top_max_m) &&
@@ -38,6 +35,13 @@ BandOptions BandFromGeometry(const BandGeometryOptions& o) {
   Require(std::isfinite(o.max_distance_m) && o.max_distance_m >= o.min_distance_m,
           "max_distance_m must be finite and >= min_distance_m");
   Require(std::isfinite(o.margin_px) && o.margin_px >= 0.0, "margin_px must be finite and >= 0");
+}
+
+BandOptions BandFromGeometry(const BandGeometryOptions& o) {
+  Require(o.image_height_px > 0, "image_height_px must be > 0, got " + std::to_string(o.image_height_px));
+  Require(std::isfinite(o.fy_px) && o.fy_px > 0.0, "fy_px must be finite and > 0, got " + std::to_string(o.fy_px));
+  Require(std::isfinite(o.cy_px), "cy_px must be finite");
+  ValidateBandGeometryOptions(o);
   double top = 0.0, bottom = 0.0;
   bool first = true;
   for (const double height : {o.text_top_max_m, o.text_bottom_min_m}) {

@@ -4,13 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
-
 #include "doorplate_localization/laser_fit/distribution_distance.h"
+#include "result_json.h"
 
 namespace doorplate_localization::tools {
 namespace {
@@ -36,83 +33,73 @@ double RateDistance(const BinnedRate& real, const BinnedRate& sim) {
   return den > 0 ? num / den : 0.0;
 }
 
-std::string Num(double v) {
-  if (!std::isfinite(v)) return "null";
-  char b[32];
-  std::snprintf(b, sizeof(b), "%.6g", v);
-  return b;
+Json FittedJson(const FittedLaserErrorOptions& f) {
+  return {{"noise_base_m", f.noise_base_m},
+          {"noise_fraction", f.noise_fraction},
+          {"noise_grazing_gain", f.noise_grazing_gain},
+          {"dropout_probability", f.dropout_probability},
+          {"dropout_per_m", f.dropout_per_m},
+          {"dropout_near_probability", f.dropout_near_probability},
+          {"dropout_near_range_m", f.dropout_near_range_m},
+          {"dropout_grazing_probability", f.dropout_grazing_probability},
+          {"dropout_grazing_from_deg", f.dropout_grazing_from_deg},
+          {"depth_edge_m", f.depth_edge_m},
+          {"mixed_pixel_probability", f.mixed_pixel_probability},
+          {"short_probability", f.short_probability},
+          {"short_mean_m", f.short_mean_m}};
 }
 
-template <class T, class F>
-std::string Array(const std::vector<T>& v, F f) {
-  std::string s = "[";
-  for (size_t k = 0; k < v.size(); ++k) s += (k ? ", " : "") + f(v[k]);
-  return s + "]";
+Json SpreadJson(const RobustSpread& s) { return {{"n", s.count}, {"median_m", s.median}, {"sigma_m", s.sigma}}; }
+
+Json SpreadsJson(const std::vector<RobustSpread>& spreads) {
+  Json array = Json::array();
+  for (const RobustSpread& s : spreads) array.push_back(SpreadJson(s));
+  return array;
 }
 
-std::string Quote(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) out += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
-  return out + "\"";
+Json RateJson(const BinnedRate& r) {
+  Json array = Json::array();
+  for (size_t k = 0; k < r.trials.size(); ++k) {
+    array.push_back({{"events", r.events[k]}, {"trials", r.trials[k]}, {"rate", r.Rate(k)}});
+  }
+  return array;
 }
 
-std::string FittedJson(const FittedLaserErrorOptions& f) {
-  std::ostringstream o;
-  o << "{\"noise_base_m\": " << Num(f.noise_base_m) << ", \"noise_fraction\": " << Num(f.noise_fraction)
-    << ", \"noise_grazing_gain\": " << Num(f.noise_grazing_gain)
-    << ", \"dropout_probability\": " << Num(f.dropout_probability) << ", \"dropout_per_m\": " << Num(f.dropout_per_m)
-    << ", \"dropout_near_probability\": " << Num(f.dropout_near_probability)
-    << ", \"dropout_near_range_m\": " << Num(f.dropout_near_range_m)
-    << ", \"dropout_grazing_probability\": " << Num(f.dropout_grazing_probability)
-    << ", \"dropout_grazing_from_deg\": " << Num(f.dropout_grazing_from_deg)
-    << ", \"depth_edge_m\": " << Num(f.depth_edge_m) << ", \"mixed_pixel_probability\": "
-    << Num(f.mixed_pixel_probability) << ", \"short_probability\": " << Num(f.short_probability)
-    << ", \"short_mean_m\": " << Num(f.short_mean_m) << "}";
-  return o.str();
-}
-
-std::string TallyJson(const BeamTally& t, const BeamTallyOptions& bins) {
-  std::ostringstream o;
-  o << "{\"outcomes\": {";
-  for (int k = 0; k < kNumBeamOutcomes; ++k) o << (k ? ", " : "") << Quote(kOutcomeNames[k]) << ": " << t.outcomes[k];
-  const auto spread = [](const RobustSpread& s) {
-    return "{\"n\": " + std::to_string(s.count) + ", \"median_m\": " + Num(s.median) + ", \"sigma_m\": " +
-           Num(s.sigma) + "}";
-  };
-  const auto rate = [](const BinnedRate& r) {
-    std::string s = "[";
-    for (size_t k = 0; k < r.trials.size(); ++k) {
-      s += (k ? ", " : "") + std::string("{\"events\": ") + std::to_string(r.events[k]) +
-           ", \"trials\": " + std::to_string(r.trials[k]) + ", \"rate\": " + Num(r.Rate(k)) + "}";
-    }
-    return s + "]";
-  };
+Json TallyJson(const BeamTally& t, const BeamTallyOptions& bins) {
+  Json outcomes = Json::object();
+  for (int k = 0; k < kNumBeamOutcomes; ++k) outcomes[kOutcomeNames[k]] = t.outcomes[k];
   std::vector<float> shorts = t.short_readings_m;
   std::sort(shorts.begin(), shorts.end());
   const auto quantile = [&](double q) { return shorts.empty() ? NAN : shorts[size_t(q * (shorts.size() - 1))]; };
-  o << "}, \"core_error\": " << spread(RobustSpreadOf(CoreErrors(t)))
-    << ", \"core_error_by_range\": " << Array(SpreadByRange(t, bins.range_bins_m), spread)
-    << ", \"core_error_by_incidence\": " << Array(SpreadByIncidence(t, bins.incidence_bins_deg), spread)
-    << ", \"dropout_by_range\": " << rate(t.dropout_by_range)
-    << ", \"dropout_by_incidence\": " << rate(t.dropout_by_incidence)
-    << ", \"dropout_rate\": " << Num(double(t.dropout_by_range.Events()) / std::max(1L, t.dropout_by_range.Trials()))
-    << ", \"short_by_range\": " << rate(t.short_by_range) << ", \"short_in_free\": " << t.short_in_free
-    << ", \"free_trials\": " << t.free_trials << ", \"short_rate\": " << Num(t.ShortRate())
-    << ", \"short_reading_quantiles_m\": {\"q10\": " << Num(quantile(0.1)) << ", \"q50\": " << Num(quantile(0.5))
-    << ", \"q90\": " << Num(quantile(0.9)) << "}, \"long_rate\": " << Num(t.LongRate())
-    << ", \"long_events\": " << t.long_events << ", \"edge_trials\": " << t.edge_trials
-    << ", \"mixed_rate\": " << Num(t.MixedRate()) << "}";
-  return o.str();
+  Json j;
+  j["outcomes"] = outcomes;
+  j["core_error"] = SpreadJson(RobustSpreadOf(CoreErrors(t)));
+  j["core_error_by_range"] = SpreadsJson(SpreadByRange(t, bins.range_bins_m));
+  j["core_error_by_incidence"] = SpreadsJson(SpreadByIncidence(t, bins.incidence_bins_deg));
+  j["dropout_by_range"] = RateJson(t.dropout_by_range);
+  j["dropout_by_incidence"] = RateJson(t.dropout_by_incidence);
+  j["dropout_rate"] = double(t.dropout_by_range.Events()) / std::max(1L, t.dropout_by_range.Trials());
+  j["short_by_range"] = RateJson(t.short_by_range);
+  j["short_in_free"] = t.short_in_free;
+  j["free_trials"] = t.free_trials;
+  j["short_rate"] = t.ShortRate();
+  j["short_reading_quantiles_m"] = {{"q10", quantile(0.1)}, {"q50", quantile(0.5)}, {"q90", quantile(0.9)}};
+  j["long_rate"] = t.LongRate();
+  j["long_events"] = t.long_events;
+  j["edge_trials"] = t.edge_trials;
+  j["mixed_rate"] = t.MixedRate();
+  return j;
 }
 
-std::string DistanceJson(const TallyDistance& d) {
-  std::ostringstream o;
-  o << "{\"error_jsd\": " << Num(d.error_jsd) << ", \"error_w1_m\": " << Num(d.error_w1_m)
-    << ", \"outcome_jsd\": " << Num(d.outcome_jsd) << ", \"dropout_range_mean_abs_diff\": "
-    << Num(d.dropout_range_w1) << ", \"dropout_incidence_mean_abs_diff\": " << Num(d.dropout_incidence_w1)
-    << ", \"short_rate_real\": " << Num(d.short_rate_real) << ", \"short_rate_sim\": " << Num(d.short_rate_sim)
-    << ", \"short_range_w1_m\": " << Num(d.short_range_w1_m) << "}";
-  return o.str();
+Json DistanceJson(const TallyDistance& d) {
+  return {{"error_jsd", d.error_jsd},
+          {"error_w1_m", d.error_w1_m},
+          {"outcome_jsd", d.outcome_jsd},
+          {"dropout_range_mean_abs_diff", d.dropout_range_w1},
+          {"dropout_incidence_mean_abs_diff", d.dropout_incidence_w1},
+          {"short_rate_real", d.short_rate_real},
+          {"short_rate_sim", d.short_rate_sim},
+          {"short_range_w1_m", d.short_range_w1_m}};
 }
 
 }  // namespace
@@ -139,25 +126,26 @@ TallyDistance CompareTallies(const BeamTally& real, const BeamTally& sim) {
 }
 
 void WriteLaserFitJson(const LaserFitReport& r, const std::string& path) {
-  std::ostringstream o;
-  const auto num = [](double v) { return Num(v); };
-  o << "{\n  \"logs\": " << Array(r.logs, Quote) << ",\n  \"split\": " << Quote(r.split) << ",\n  \"seed\": " << r.seed
-    << ",\n  \"range_bins_m\": " << Array(r.bins.range_bins_m, num)
-    << ",\n  \"incidence_bins_deg\": " << Array(r.bins.incidence_bins_deg, num)
-    << ",\n  \"depth_edge_m\": " << Num(r.bins.depth_edge_m) << ",\n  \"gate\": {\"gate_m\": " << Num(r.bins.gate_m)
-    << ", \"gate_fraction\": " << Num(r.bins.gate_fraction) << "},\n  \"fitted\": " << FittedJson(r.fitted)
-    << ",\n  \"gaussian\": {\"range_noise_stddev_m\": " << Num(r.gaussian_stddev_m)
-    << ", \"dropout_probability\": " << Num(r.gaussian_dropout) << "},\n  \"per_log\": {";
-  for (size_t k = 0; k < r.per_log.size(); ++k) {
-    o << (k ? ",\n    " : "\n    ") << Quote(r.per_log[k].name) << ": " << TallyJson(*r.per_log[k].tally, r.bins);
-  }
-  o << "\n  },\n  \"real\": " << TallyJson(*r.real.tally, r.bins)
-    << ",\n  \"fitted_sim\": " << TallyJson(*r.fitted_sim.tally, r.bins)
-    << ",\n  \"gaussian_sim\": " << TallyJson(*r.gaussian_sim.tally, r.bins)
-    << ",\n  \"distance_fitted\": " << DistanceJson(r.fitted_distance)
-    << ",\n  \"distance_gaussian\": " << DistanceJson(r.gaussian_distance) << "\n}\n";
+  Json j;
+  j["logs"] = r.logs;
+  j["split"] = r.split;
+  j["seed"] = r.seed;
+  j["range_bins_m"] = r.bins.range_bins_m;
+  j["incidence_bins_deg"] = r.bins.incidence_bins_deg;
+  j["depth_edge_m"] = r.bins.depth_edge_m;
+  j["gate"] = {{"gate_m", r.bins.gate_m}, {"gate_fraction", r.bins.gate_fraction}};
+  j["fitted"] = FittedJson(r.fitted);
+  j["gaussian"] = {{"range_noise_stddev_m", r.gaussian_stddev_m}, {"dropout_probability", r.gaussian_dropout}};
+  Json per_log = Json::object();
+  for (const NamedTally& n : r.per_log) per_log[n.name] = TallyJson(*n.tally, r.bins);
+  j["per_log"] = per_log;
+  j["real"] = TallyJson(*r.real.tally, r.bins);
+  j["fitted_sim"] = TallyJson(*r.fitted_sim.tally, r.bins);
+  j["gaussian_sim"] = TallyJson(*r.gaussian_sim.tally, r.bins);
+  j["distance_fitted"] = DistanceJson(r.fitted_distance);
+  j["distance_gaussian"] = DistanceJson(r.gaussian_distance);
   std::ofstream out(path);
-  out << o.str();
+  out << ResultJsonText(j);
   if (!out) throw std::runtime_error(path + ": cannot write the JSON report");
 }
 
@@ -188,9 +176,9 @@ void PrintLaserFitReport(const LaserFitReport& r) {
                 r.bins.incidence_bins_deg[k + 1], by_inc[k].count, by_inc[k].sigma, by_inc[k].median,
                 t.dropout_by_incidence.Rate(k));
   }
-  std::printf("\nfitted: %s\n", FittedJson(r.fitted).c_str());
-  std::printf("distance real vs fitted:   %s\n", DistanceJson(r.fitted_distance).c_str());
-  std::printf("distance real vs gaussian: %s\n", DistanceJson(r.gaussian_distance).c_str());
+  std::printf("\nfitted: %s\n", ResultJsonLine(FittedJson(r.fitted)).c_str());
+  std::printf("distance real vs fitted:   %s\n", ResultJsonLine(DistanceJson(r.fitted_distance)).c_str());
+  std::printf("distance real vs gaussian: %s\n", ResultJsonLine(DistanceJson(r.gaussian_distance)).c_str());
 }
 
 }  // namespace doorplate_localization::tools

@@ -1,5 +1,5 @@
 // doorplate_laser_fit's outputs: the comparison of real and simulated tallies (distances), the JSON file
-// and the side-by-side plot (OpenCV). ROS-free.
+// (nlohmann-json, as the results files: result_json.h) and the side-by-side plot (OpenCV). ROS-free.
 #pragma once
 
 #include <string>

@@ -9,8 +9,8 @@
 //   DIR/map.pgm, DIR/map.yaml  the session's map (slam: rendered at the solved poses; rbpf: the best
 //                              particle's), map_server format
 //   DIR/map_trajectory.png     the map with the trajectory drawn over it
-// and a progress line on stderr every few seconds. Scan stamps are the log's ipc_timestamps when they
-// increase from line to line, else the FLASER order (one second per line; said on stderr).
+// and a progress line on stderr every few seconds (progress_line.h). Scan stamps are the log's ipc_timestamps
+// when they increase from line to line, else the FLASER order (one second per line; said on stderr).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -27,6 +27,7 @@
 #include "cli_app.h"
 #include "map_tool_output.h"
 #include "output_guard.h"
+#include "progress_line.h"
 #include "doorplate_localization/common/limits.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/slam/carmen_reader.h"
@@ -68,8 +69,8 @@ void AddOptions(CLI::App* app, Args* args) {
   app->add_option("--seed", args->seed, "filter seed [the option table's]")->transform(tools::Seed());
   app->add_option("--particles", args->particles, "number of particles [the method's]")
       ->transform(tools::WholeNumber(1, dl::limits::kMaxParticles));
-  app->add_option("--progress-s", args->progress_s, "a progress line on stderr every this many seconds")
-      ->capture_default_str()->check(tools::Number());
+  app->add_option("--progress-s", args->progress_s, "a progress line on stderr every this many seconds (rewritten in "
+                  "place twice a second on a terminal; 0: none)")->capture_default_str()->check(tools::Number(0.0));
   app->add_option("--set", args->sets, "NAME=VALUE: a SLAM option (repeatable)")->allow_extra_args(false);
   app->add_flag("--dump-particles", args->dump_particles, "also write every particle's trajectory "
                 "(trajectory_particleI.txt)");
@@ -137,19 +138,22 @@ int Run(const Args& args) {
   }
   dl::MappingSession session(args.options);
   const dl::RbpfSlam& filter = session.slam().slam();
-  double next_progress = args.progress_s;
-  for (const dl::CarmenScan& record : log.scans) {
+  tools::ProgressLine progress({args.progress_s});
+  double driven_m = 0.0;  // odometry path length
+  for (std::size_t i = 0; i < log.scans.size(); ++i) {
+    const dl::CarmenScan& record = log.scans[i];
     session.AddScan(increasing ? record.timestamp_s : record.scan_index, record.odometry_pose, record.scan);
-    if (clock.Seconds() >= next_progress) {
-      next_progress += args.progress_s;
+    if (i > 0) driven_m += dl::Norm(record.odometry_pose.Position() - log.scans[i - 1].odometry_pose.Position());
+    if (progress.Due(clock.Seconds())) {
       const dl::RbpfSlamStats& s = filter.stats();
-      std::fprintf(stderr,
-                   "doorplate_map_log: scan %d/%zu, processed %d, neff %.1f, resamplings %d, weak %ld, "
-                   "jumps rejected %ld, maps %.0f MB, %.1f s, peak RSS %.0f MB\n",
-                   s.scans_seen, log.scans.size(), s.scans_processed, s.last_neff, s.resamplings,
-                   s.weak_matches, s.rejected_jumps, filter.MapMemoryBytes() / 1e6, clock.Seconds(), tools::PeakRssMb());
+      progress.Show("doorplate_map_log: scan %d/%zu, %.1f m driven, processed %d, neff %.1f, resamplings %d, weak %ld, "
+                    "jumps rejected %ld, maps %.0f MB, %.1f s, peak RSS %.0f MB",
+                    s.scans_seen, log.scans.size(), driven_m, s.scans_processed, s.last_neff, s.resamplings,
+                    s.weak_matches, s.rejected_jumps, filter.MapMemoryBytes() / 1e6, clock.Seconds(),
+                    tools::PeakRssMb());
     }
   }
+  progress.Finish();
   session.Solve();  // the back end (slam), and the map
   std::vector<dl::TrajectoryPoint> trajectory;
   if (args.laser_only) {

@@ -7,7 +7,8 @@
 // scan; the rawlog's odometry starts at the origin). With --expect "x y yaw_deg" it also prints the
 // difference to that pose, e.g. MRPT's own regression value for the Málaga Telecom Faculty loop
 // (RBPF_SLAM_App_unittest: [3.4548 -18.0399 -86.48 deg], passed when the SE(3) log of the difference
-// is below 1.0), and exits 3 if it is not below --max-error (default 1.0).
+// is below 1.0), and exits 3 if it is not below --max-error (default 1.0). A progress line on stderr every
+// few seconds (progress_line.h).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -26,6 +27,7 @@
 #include "cli_app.h"
 #include "map_tool_output.h"
 #include "output_guard.h"
+#include "progress_line.h"
 #include "rawlog_reader.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/slam/mapping_session.h"
@@ -48,7 +50,7 @@ struct Args {
   std::vector<std::string> sets;
   bool has_expected = false;
   dl::Pose2D expected;
-  double max_error = 1.0;
+  double max_error = 1.0, progress_s = 5.0;
   dl::MappingSessionOptions options;
 };
 
@@ -63,6 +65,8 @@ void AddOptions(CLI::App* app, Args* args) {
   app->add_option("--expect", args->expect, "\"X Y YAW_DEG\": the final pose expected");
   app->add_option("--max-error", args->max_error, "|log| of the difference to --expect below which it passes")
       ->capture_default_str()->check(tools::Number());
+  app->add_option("--progress-s", args->progress_s, "a progress line on stderr every this many seconds (rewritten in "
+                  "place twice a second on a terminal; 0: none)")->capture_default_str()->check(tools::Number(0.0));
   app->callback([args] {
     for (const std::string& set : args->sets) {
       tools::ApplySetOption(set, [&](const std::string& name, double v) { dl::SetTextSlamOption(name, v, &args->options.slam); });
@@ -124,12 +128,21 @@ int Run(const Args& args) {
   mrpt::obs::CSensoryFrame::Ptr frame;
   std::size_t entry = 0;
   int scans = 0, pairs = 0;
+  double driven_m = 0.0;  // odometry path length
+  tools::ProgressLine progress({args.progress_s});
   while (entry < rawlog.size() && rawlog.getActionObservationPair(actions, frame, entry)) {
     ++pairs;
+    if (progress.Due(clock.Seconds())) {
+      const dl::RbpfSlamStats& s = filter.stats();
+      progress.Show("doorplate_map_rawlog: entry %zu/%zu, %.1f m driven, %d scans, processed %d, neff %.1f, %.1f s, "
+                    "peak RSS %.0f MB", entry, rawlog.size(), driven_m, scans, s.scans_processed, s.last_neff,
+                    clock.Seconds(), tools::PeakRssMb());
+    }
     if (actions) {
       if (const auto move = actions->getBestMovementEstimation()) {
         const mrpt::poses::CPose2D d = move->poseChange->getMeanVal();
         odometry = odometry.Compose({d.x(), d.y(), d.phi()});
+        driven_m += std::hypot(d.x(), d.y());
       }
     }
     if (!frame) continue;
@@ -142,6 +155,7 @@ int Run(const Args& args) {
       break;  // one scan per step, as MRPT's RBPF inserts one sensory frame per action
     }
   }
+  progress.Finish();
   if (filter.stats().scans_processed == 0) throw std::runtime_error(args.rawlog + ": no 2D range scan");
   session.Solve();  // the back end, and the map rendered at its poses
   // Nothing is written unless the run made a map and a finite trajectory (an older result stays).

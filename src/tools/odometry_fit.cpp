@@ -4,13 +4,12 @@
 // (slam/scan_icp.h) started from the odometry, i.e. a laser-odometry path; steps whose ICP leaves the
 // travel direction unconstrained (corridors) are left out. Cuts the steps into segments of travel and fits
 // the simulator's slip model (odometry_fit/odometry_slip_fit.h); writes the segments and the fit as JSON
-// and prints a summary. --seed drives the bootstrap intervals only.
+// (nlohmann-json, result_json.h) and prints a summary. --seed drives the bootstrap intervals only.
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
+#include <limits>
 #include <optional>
-#include <sstream>
 #include <string>
 
 #include <Eigen/Dense>
@@ -24,6 +23,8 @@
 #include "cli_app.h"
 #include "output_guard.h"
 #include "rawlog_reader.h"
+#include "result_json.h"
+#include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/odometry_fit/odometry_slip_fit.h"
 #include "doorplate_localization/slam/scan_icp.h"
 
@@ -162,63 +163,53 @@ double AlongSigma(const Eigen::Matrix3d& information, dl::Vec2 step) {
   return std::sqrt(std::max(0.0, u.dot(cov * u)));
 }
 
-std::string Num(double v) {
-  if (!std::isfinite(v)) return "null";
-  char b[32];
-  std::snprintf(b, sizeof(b), "%.6g", v);
-  return b;
-}
-
-std::string Value(const dl::FittedValue& v) {
-  return "{\"value\": " + Num(v.value) + ", \"ci95\": [" + Num(v.low) + ", " + Num(v.high) + "]}";
-}
+dl::Json FittedJson(const dl::FittedValue& v) { return {{"value", v.value}, {"ci95", {v.low, v.high}}}; }
 
 void WriteJson(const Args& args, int scans, int synced, int aligned, int constrained,
                const std::vector<dl::OdometrySegment>& segs, const dl::OdometrySlipFit& fit) {
-  std::ostringstream o;
-  o << "{\n  \"rawlog\": \"" << args.rawlog << "\",\n  \"seed\": " << args.seed
-    << ",\n  \"segment_length_m\": " << Num(args.segments.segment_length_m)
-    << ",\n  \"max_along_sigma_m\": " << Num(args.max_along_sigma_m) << ",\n  \"scans\": " << scans
-    << ",\n  \"scans_odometry_synced\": " << synced << ",\n  \"steps_icp_aligned\": " << aligned
-    << ",\n  \"steps_along_constrained\": " << constrained
-    << ",\n  \"fit\": {\n    \"segments_used\": " << fit.segments_used
-    << ",\n    \"segments_rejected\": " << fit.segments_rejected
-    << ",\n    \"mean_segment_length_m\": " << Num(fit.mean_segment_length_m)
-    << ",\n    \"mean_scale_error\": " << Num(fit.mean_scale_error)
-    << ",\n    \"median_scale_error\": " << Num(fit.median_scale_error)
-    << ",\n    \"scale_error\": " << Value(fit.scale_error)
-    << ",\n    \"turn_scale_error_m_per_rad\": " << Value(fit.turn_scale_error_m_per_rad)
-    << ",\n    \"turn_rotation_error_rad_per_rad\": " << Value(fit.turn_rotation_error)
-    << ",\n    \"heading_drift_rad_per_m\": " << Value(fit.heading_drift_rad_per_m)
-    << ",\n    \"residual_stddev\": " << Num(fit.residual_stddev)
-    << ",\n    \"lag1_correlation\": " << Num(fit.lag1_correlation) << ", \"lag1_pairs\": " << fit.lag1_pairs
-    << ",\n    \"lag2_correlation\": " << Num(fit.lag2_correlation) << ", \"lag2_pairs\": " << fit.lag2_pairs
-    << ",\n    \"ou_stddev\": " << Num(fit.ou_stddev)
-    << ",\n    \"ou_correlation_length_m\": " << Num(fit.ou_correlation_length_m)
-    << ",\n    \"zone_chi2\": " << Num(fit.zone_chi2) << ", \"zone_dof\": " << fit.zone_dof << ",\n    \"zones\": [";
-  for (std::size_t z = 0; z < fit.zones.size(); ++z) {
-    const dl::ZoneScaleError& zone = fit.zones[z];
-    o << (z ? ",\n      " : "\n      ") << "{\"start_arc_m\": " << Num(zone.start_arc_m)
-      << ", \"end_arc_m\": " << Num(zone.end_arc_m) << ", \"segments\": " << zone.segments
-      << ", \"mean_scale_error\": " << Num(zone.mean) << ", \"standard_error\": " << Num(zone.standard_error) << "}";
+  dl::Json f;
+  f["segments_used"] = fit.segments_used;
+  f["segments_rejected"] = fit.segments_rejected;
+  f["mean_segment_length_m"] = fit.mean_segment_length_m;
+  f["mean_scale_error"] = fit.mean_scale_error;
+  f["median_scale_error"] = fit.median_scale_error;
+  f["scale_error"] = FittedJson(fit.scale_error);
+  f["turn_scale_error_m_per_rad"] = FittedJson(fit.turn_scale_error_m_per_rad);
+  f["turn_rotation_error_rad_per_rad"] = FittedJson(fit.turn_rotation_error);
+  f["heading_drift_rad_per_m"] = FittedJson(fit.heading_drift_rad_per_m);
+  f["residual_stddev"] = fit.residual_stddev;
+  f["lag1_correlation"] = fit.lag1_correlation;
+  f["lag1_pairs"] = fit.lag1_pairs;
+  f["lag2_correlation"] = fit.lag2_correlation;
+  f["lag2_pairs"] = fit.lag2_pairs;
+  f["ou_stddev"] = fit.ou_stddev;
+  f["ou_correlation_length_m"] = fit.ou_correlation_length_m;
+  f["zone_chi2"] = fit.zone_chi2;
+  f["zone_dof"] = fit.zone_dof;
+  f["zones"] = dl::Json::array();
+  for (const dl::ZoneScaleError& zone : fit.zones) {
+    f["zones"].push_back({{"start_arc_m", zone.start_arc_m}, {"end_arc_m", zone.end_arc_m}, {"segments", zone.segments},
+                          {"mean_scale_error", zone.mean}, {"standard_error", zone.standard_error}});
   }
-  o << "]\n  },\n  \"segments\": [";
-  for (std::size_t k = 0; k < segs.size(); ++k) {
-    const dl::OdometrySegment& g = segs[k];
-    o << (k ? ",\n    " : "\n    ") << "{\"first_step\": " << g.first_step << ", \"steps\": " << g.num_steps
-      << ", \"start_arc_m\": " << Num(g.start_arc_m) << ", \"x_m\": " << Num(g.start_position.x)
-      << ", \"y_m\": " << Num(g.start_position.y) << ", \"reference_m\": " << Num(g.reference_distance_m)
-      << ", \"odometry_m\": " << Num(g.odometry_distance_m) << ", \"reference_rad\": " << Num(g.reference_rotation_rad)
-      << ", \"odometry_rad\": " << Num(g.odometry_rotation_rad) << ", \"duration_s\": " << Num(g.duration_s) << "}";
+  dl::Json j;
+  j["rawlog"] = args.rawlog;
+  j["seed"] = args.seed;
+  j["segment_length_m"] = args.segments.segment_length_m;
+  j["max_along_sigma_m"] = args.max_along_sigma_m;
+  j["scans"] = scans;
+  j["scans_odometry_synced"] = synced;
+  j["steps_icp_aligned"] = aligned;
+  j["steps_along_constrained"] = constrained;
+  j["fit"] = f;
+  j["segments"] = dl::Json::array();
+  for (const dl::OdometrySegment& g : segs) {
+    j["segments"].push_back({{"first_step", g.first_step}, {"steps", g.num_steps}, {"start_arc_m", g.start_arc_m},
+                             {"x_m", g.start_position.x}, {"y_m", g.start_position.y},
+                             {"reference_m", g.reference_distance_m}, {"odometry_m", g.odometry_distance_m},
+                             {"reference_rad", g.reference_rotation_rad}, {"odometry_rad", g.odometry_rotation_rad},
+                             {"duration_s", g.duration_s}});
   }
-  o << "\n  ]\n}\n";
-  const std::string tmp = args.json + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << o.str();
-    if (!out) throw std::runtime_error(args.json + ": cannot write");
-  }
-  std::filesystem::rename(tmp, args.json);
+  dl::WriteFileAtomically(args.json, dl::ResultJsonText(j));
 }
 
 int Run(const Args& args) {

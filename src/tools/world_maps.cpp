@@ -15,6 +15,7 @@
 #include "cli_app.h"
 #include "map_tool_output.h"
 #include "output_guard.h"
+#include "doorplate_localization/common/limits.h"
 #include "doorplate_localization/maps/building_map.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/sim/ground_truth_maps.h"
@@ -40,13 +41,25 @@ struct Args {
 namespace tools = doorplate_localization::tools;
 using tools::UsageError;
 
+// A number within the map resolution limits; CLI11 prefixes the option: "--resolution: must be finite and in
+// [0.001, 100] m (limits::kMinMapResolutionM, kMaxMapResolutionM), got 1e-09".
+CLI::Validator MapResolution() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const auto value = tools::ParseFiniteNumber(text);
+        return value ? dl::limits::CheckMapResolution(*value) : "'" + text + "' is not a number";
+      },
+      "in [" + tools::FormatNumber(dl::limits::kMinMapResolutionM) + ", " +
+          tools::FormatNumber(dl::limits::kMaxMapResolutionM) + "]");
+}
+
 void AddOptions(CLI::App* app, Args* args) {
   app->footer(kNotes);
   app->add_option("--world", args->world, "world file (worlds/*.yaml)");
   app->add_option("--building", args->building, "building file (worlds/*.building.yaml)");
   app->add_option("--out", args->out, "BASE of the maps (--world) or their folder DIR (--building)")->required();
   app->add_option("--resolution", args->resolution_m, "metres per cell")->capture_default_str()
-      ->check(tools::PositiveNumber());
+      ->check(MapResolution());
   app->add_option("--laser-height", args->laser_height_m,
                   "height whose surfaces are obstacles, m [each world's laser mount height]")
       ->check(tools::PositiveNumber());

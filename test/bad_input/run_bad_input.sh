@@ -121,7 +121,9 @@ expect 1 'world_crossing_walls\.yaml: .*crosses wall' doorplate_world_maps --wor
 begin world_maps_overlapping_walls world_overlapping_walls.yaml
 expect 1 'world_overlapping_walls\.yaml: .*lies on wall' doorplate_world_maps --world world_overlapping_walls.yaml --out m
 begin world_maps_resolution_1e-9 world_ok.yaml
-expect 1 'world_ok\.yaml would need [0-9.e+]+ cells' doorplate_world_maps --world world_ok.yaml --out m --resolution 1e-9
+expect 2 '--resolution: must be finite and in \[0\.001, 100\] m \(limits::kMinMapResolutionM, kMaxMapResolutionM\), got 1e-09' doorplate_world_maps --world world_ok.yaml --out m --resolution 1e-9
+begin world_maps_resolution_1e3 world_ok.yaml
+expect 2 '--resolution: must be finite .* got 1000' doorplate_world_maps --world world_ok.yaml --out m --resolution 1e3
 begin world_maps_missing_world
 expect 1 'no_such\.yaml' doorplate_world_maps --world no_such.yaml --out m
 
@@ -197,7 +199,7 @@ expect 1 'would write garbage\.rawlog, the input given to --rawlog' doorplate_od
 
 # ---- doorplate_mission_report ----
 begin mission_report_garbage_bags world_ok.yaml garbage.bag; world_maps_of world_ok.yaml map; earlier_result out
-expect 1 'garbage\.bag: cannot open the bag: ' doorplate_mission_report --world world_ok.yaml --maps . --mapping-bag garbage.bag --localization-bag garbage.bag --room 202 --out out
+expect 1 'garbage\.bag: not a readable bag: ' doorplate_mission_report --world world_ok.yaml --maps . --mapping-bag garbage.bag --localization-bag garbage.bag --room 202 --out out
 begin mission_report_bad_command_line world_ok.yaml
 expect 2 '[Uu]sage: doorplate_mission_report' doorplate_mission_report --world world_ok.yaml --room
 

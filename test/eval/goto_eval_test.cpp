@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <stdexcept>
+#include <string>
 
 #include "../sim/test_worlds.h"
 #include "eval_test_worlds.h"
@@ -55,6 +56,27 @@ TEST(GotoEval, ArrivesAtRandomRoomsOfAnLFloorFromRandomCorridorPoses) {
   const GotoSummary s = Summarize(r);
   EXPECT_EQ(s.successes, 3);
   EXPECT_EQ(s.trials, 3);
+}
+
+TEST(GotoEval, ProgressLinesTellTheRoomAndTheDistanceLeft) {
+  const World world = LFloor();
+  const OccupancyGrid grid = RasterizeWorld(world, 0.05, world.sensors.laser.mount_height_m);
+  GotoEvalOptions options;
+  options.trials = 1;
+  options.seed = 2;
+  options.use_text = false;
+  options.filter.filter.max_particles = 1000;
+  options.progress_every_s = 3.0;  // simulated seconds; stderr is a file here: plain lines
+  testing::internal::CaptureStderr();
+  const auto text_map = std::make_shared<const TextMap>(GroundTruthTextMap(world));
+  const GotoEvalResult r = RunGotoEval(world, grid, text_map, options);
+  const std::string progress = testing::internal::GetCapturedStderr();
+  ASSERT_EQ(r.trials.size(), 1u);
+  ASSERT_GT(r.trials[0].sim_seconds, 6.0) << "too short a trial for two lines";
+  EXPECT_NE(progress.find("goto: trial 1/1, to room " + r.trials[0].room + ", 3 s simulated, "), std::string::npos)
+      << progress;
+  EXPECT_NE(progress.find(", 6 s simulated, "), std::string::npos) << progress;
+  EXPECT_NE(progress.find("distance left "), std::string::npos) << progress;
 }
 
 TEST(GotoEval, InABuildingTheRobotTakesTheLiftNamedAndFindsTheRoomsFloorByItsPlates) {

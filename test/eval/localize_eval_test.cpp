@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+
 #include "doorplate_localization/sim/ground_truth_maps.h"
 #include "eval_test_worlds.h"
 
@@ -64,11 +67,19 @@ TEST(LocalizeEval, TextAmclRecoversFromAKidnap) {
   EXPECT_EQ(Summarize(r).recoveries, 1);
 }
 
-TEST(LocalizeEval, AmclRunsWithoutTheCameraAndIsReproducible) {
+TEST(LocalizeEval, AmclRunsWithoutTheCameraAndIsReproducibleWithOrWithoutProgressLines) {
   const TinyCorridor c;
   const LocalizeEvalOptions options = Fast(LocalizeMethod::kAmcl, 2);
   const LocalizeEvalResult a = RunLocalizeEval(c.world, c.grid, nullptr, c.grid, options);
-  const LocalizeEvalResult b = RunLocalizeEval(c.world, c.grid, nullptr, c.grid, options);
+  LocalizeEvalOptions with_progress = options;
+  with_progress.progress_every_s = 2.0;  // simulated seconds; stderr is a file here: plain lines
+  testing::internal::CaptureStderr();
+  const LocalizeEvalResult b = RunLocalizeEval(c.world, c.grid, nullptr, c.grid, with_progress);
+  const std::string progress = testing::internal::GetCapturedStderr();
+  EXPECT_NE(progress.find("localize: trial 1/2, "), std::string::npos) << progress;
+  EXPECT_NE(progress.find("particle spread "), std::string::npos) << progress;
+  EXPECT_NE(progress.find("0/0 plates used"), std::string::npos) << progress;
+  EXPECT_EQ(progress.find('\r'), std::string::npos) << "no rewriting in place off a terminal";
   ASSERT_EQ(a.trials.size(), 2u);
   for (size_t i = 0; i < a.trials.size(); ++i) {
     EXPECT_EQ(a.trials[i].plate_reports, 0);
@@ -127,6 +138,15 @@ TEST(LocalizeEval, InABuildingThePlatesPickTheFloorAndAFixCountsOnlyOnTheRightFl
     EXPECT_LE(t.floor_travel_m, t.fix.travel_m + 1e-9);
   }
   EXPECT_EQ(Summarize(r).wrong_floor, 0);
+}
+
+TEST(ParticleSpreadM, IsTheRmsDistanceOfThePositionsFromTheirMean) {
+  const auto at = [](double x, double y) { return Particle{{x, y, 0.0}, 0.25}; };
+  EXPECT_EQ(ParticleSpreadM({}), 0.0);
+  EXPECT_EQ(ParticleSpreadM({at(5, 5)}), 0.0);
+  EXPECT_DOUBLE_EQ(ParticleSpreadM({at(0, 0), at(2, 0)}), 1.0);
+  EXPECT_DOUBLE_EQ(ParticleSpreadM({at(1, 1), at(-1, 1), at(-1, -1), at(1, -1)}), std::sqrt(2.0));
+  EXPECT_DOUBLE_EQ(ParticleSpreadM({at(10, 3), at(12, 3), at(10, 3), at(12, 3)}), 1.0);  // wherever it lies
 }
 
 TEST(LocalizeDrive, ParsesItsNamesAndRefusesOthers) {

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "eval_test_worlds.h"
 
 namespace doorplate_localization {
@@ -26,8 +28,14 @@ OcrEvalOptions OnePass() {
   return options;
 }
 
-TEST(OcrEval, ReadsEveryPlateOfATinyCorridorOnceWithoutFalseReads) {
-  const OcrEvalResult result = RunOcrEval(ThreePlateCorridor(), OnePass());
+TEST(OcrEval, ReadsEveryPlateOfATinyCorridorOnceWithoutFalseReadsAndTellsItsProgress) {
+  OcrEvalOptions options = OnePass();
+  options.progress_every_s = 5.0;  // simulated seconds; stderr is a file here: plain lines
+  testing::internal::CaptureStderr();
+  const OcrEvalResult result = RunOcrEval(ThreePlateCorridor(), options);
+  const std::string progress = testing::internal::GetCapturedStderr();
+  EXPECT_NE(progress.find("ocr: pass 1/1, 5 s simulated, "), std::string::npos) << progress;
+  EXPECT_NE(progress.find(" plates passed, "), std::string::npos) << progress;
   ASSERT_EQ(result.passes.size(), 1u);
   const OcrPassResult& pass = result.passes[0];
   EXPECT_TRUE(pass.sweep_done);

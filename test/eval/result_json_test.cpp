@@ -38,5 +38,13 @@ TEST(ResultJsonText, EscapesControlCharactersKeepsUtf8AndReplacesBrokenUtf8) {
   EXPECT_EQ(ResultJsonText("E1\xC3"), "\"E1\xEF\xBF\xBD\"\n");  // a reading cut inside a character: U+FFFD
 }
 
+TEST(ResultJsonLine, WritesTheSameRoundedValuesOnOneLine) {
+  Json json;
+  json["noise_m"] = 1.0 / 3.0;
+  json["n"] = 4.0;
+  json["ci95"] = {std::nan(""), 0.5};
+  EXPECT_EQ(ResultJsonLine(json), "{\"noise_m\":0.3333333333,\"n\":4,\"ci95\":[null,0.5]}");
+}
+
 }  // namespace
 }  // namespace doorplate_localization

@@ -63,5 +63,20 @@ TEST(AugmentedMclAverages, RejectsASlowAlphaAboveTheFastOne) {
   EXPECT_THROW(AugmentedMclAverages(0.1, 1.5), std::invalid_argument);
 }
 
+// dynamic_reconfigure (issue 19): a filter with new alphas goes on from the old averages.
+TEST(AugmentedMclAverages, TakesAnothersAveragesAndKeepsItsOwnAlphas) {
+  AugmentedMclAverages old_alphas(0.1, 0.5);
+  old_alphas.Update(0.0);
+  old_alphas.Update(std::log(0.2));
+  AugmentedMclAverages new_alphas(0.0, 1.0);
+  new_alphas.TakeAveragesFrom(old_alphas);
+  EXPECT_TRUE(new_alphas.initialized());
+  EXPECT_EQ(new_alphas.log_w_slow(), old_alphas.log_w_slow());
+  EXPECT_EQ(new_alphas.log_w_fast(), old_alphas.log_w_fast());
+  new_alphas.Update(std::log(0.5));  // alpha_slow 0: w_slow stays; alpha_fast 1: w_fast is the measurement
+  EXPECT_NEAR(new_alphas.log_w_slow(), old_alphas.log_w_slow(), 1e-12);
+  EXPECT_NEAR(new_alphas.log_w_fast(), std::log(0.5), 1e-12);
+}
+
 }  // namespace
 }  // namespace doorplate_localization

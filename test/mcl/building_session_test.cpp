@@ -72,6 +72,29 @@ TEST(BuildingSession, FromAnUnknownFloorThePlatesPickTheFloorAndPlaceTheRobotOnI
   EXPECT_EQ(session.Status().state, LocalizationState::kConverged);
 }
 
+// dynamic_reconfigure (issue 19): every floor's session continues with the new options, keeping its
+// particles, and the floor, its certainty and the switch count carry over.
+TEST(BuildingSession, ContinuedWithNewOptionsEveryFloorKeepsItsParticlesAndTheFloorStays) {
+  const TwoFloors b;
+  BuildingSession session(TwoFloors::Options(), b.maps);
+  double t = 0.0;
+  Drive(b, &session, 2.0, 14.0, /*read_floor=*/1, &t);
+  ASSERT_EQ(session.floor_id(), "3");
+  TextAmclSessionOptions o = TwoFloors::Options().session;
+  o.setup.filter.update_min_d_m = 0.5;
+  o.setup.likelihood_field.sigma_hit_m = 0.3;
+  const BuildingSession continued(session, o);
+  EXPECT_EQ(continued.floor_id(), "3");
+  EXPECT_TRUE(continued.floor_certain());
+  EXPECT_EQ(continued.floor_switches(), 1);
+  EXPECT_EQ(continued.session().options().setup.filter.update_min_d_m, 0.5);
+  ASSERT_EQ(continued.session().particles().size(), session.session().particles().size());
+  EXPECT_EQ(continued.session().particles().front().pose.x_m, session.session().particles().front().pose.x_m);
+  EXPECT_EQ(continued.Estimate().pose.x_m, session.Estimate().pose.x_m);
+  o.setup.filter.kld_z = -1.0;  // refused as by the first constructor, naming the floor
+  EXPECT_THROW(BuildingSession(session, o), std::invalid_argument);
+}
+
 TEST(BuildingSession, ConvergedWaitsUntilTheFloorIsCertain) {
   const TwoFloors b;
   BuildingSessionOptions o = TwoFloors::Options();  // floor unknown, but the pose on the first map given

@@ -208,6 +208,55 @@ TEST(TextAmclSession, AReadingOlderThanTheOdometryKeptIsDroppedAsStale) {
   EXPECT_EQ(session.counters().stale_readings, 1);
 }
 
+bool SameParticles(const std::vector<Particle>& a, const std::vector<Particle>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (a[i].pose.x_m != b[i].pose.x_m || a[i].pose.y_m != b[i].pose.y_m ||
+        a[i].pose.theta_rad != b[i].pose.theta_rad || a[i].weight != b[i].weight) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// dynamic_reconfigure (issue 19): a session continued under the same options runs on exactly as the
+// original (particles, random stream, odometry reference, resampling count all carried over); under new
+// options it keeps the particles, map -> odom and the odometry, and the new gating and KLD bounds apply.
+TEST(TextAmclSession, ContinuedUnderNewOptionsItKeepsTheParticlesAndUnderTheSameOnesRunsOnUnchanged) {
+  const Fixture f;
+  auto step = [&f](TextAmclSession& s, double t, double x) {
+    const Pose2D robot{f.robot().x_m + x, f.robot().y_m, 0.0};
+    return s.AddScan(t, {x, 0.0, 0.0}, f.ScanAt(robot));
+  };
+  TextAmclSession original = f.Make(f.Options());
+  for (int i = 0; i < 3; ++i) step(original, i, 0.3 * i);
+  const TextAmclSession same(f.Options(), f.corridor.occupancy, original);
+  EXPECT_TRUE(SameParticles(same.particles(), original.particles()));
+  EXPECT_EQ(same.Estimate().pose.x_m, original.Estimate().pose.x_m);
+  ASSERT_TRUE(same.MapToOdom().has_value());
+  EXPECT_EQ(same.MapToOdom()->x_m, original.MapToOdom()->x_m);
+  EXPECT_EQ(same.counters().laser_updates, original.counters().laser_updates);
+  TextAmclSessionOptions wide = f.Options();
+  wide.setup.filter.update_min_d_m = 1.0;
+  wide.setup.filter.max_particles = 200;
+  wide.setup.filter.min_particles = 50;
+  TextAmclSession reconfigured(wide, f.corridor.occupancy, original);
+  EXPECT_TRUE(SameParticles(reconfigured.particles(), original.particles()));
+  EXPECT_EQ(reconfigured.options().setup.filter.max_particles, 200);
+  TextAmclSession continued(f.Options(), f.corridor.occupancy, original);
+  for (int i = 3; i < 6; ++i) {
+    const SessionUpdate a = step(original, i, 0.3 * i);
+    const SessionUpdate b = step(continued, i, 0.3 * i);
+    EXPECT_EQ(a.laser_used, b.laser_used);
+    EXPECT_TRUE(SameParticles(original.particles(), continued.particles())) << "step " << i;
+    // 0.3 m per step: below the new update_min_d (1 m), the reconfigured filter does not move.
+    EXPECT_FALSE(step(reconfigured, i, 0.3 * i).laser_used) << "step " << i;
+  }
+  EXPECT_EQ(reconfigured.particles().size(), 500u) << "kept until the next resampling";
+  for (int i = 0; i < 2; ++i) EXPECT_TRUE(step(reconfigured, 10 + i, 0.9 + 1.1 * (i + 1)).laser_used);
+  EXPECT_LE(reconfigured.particles().size(), 200u) << "resampled into the new KLD bounds";
+}
+
 TEST(TextAmclSession, RefusesBadOptionsNamingTheField) {
   const Fixture f;
   TextAmclSessionOptions o = f.Options();

@@ -184,5 +184,37 @@ TEST_F(TextAmclTest, IsDeterministicForAGivenSeed) {
   EXPECT_TRUE(a.size() != c.size() || a[0].pose.x_m != c[0].pose.x_m);
 }
 
+// dynamic_reconfigure (issue 19): a filter continuing from another takes its particles and running state;
+// under the same options it runs on exactly as the original would, under new ones the new bounds apply.
+TEST_F(TextAmclTest, ContinueFromTakesTheParticlesAndRunsOnAsTheOriginal) {
+  setup_.amcl.max_particles = 1000;
+  auto original = test::MakeFilter(room_, nullptr, setup_);
+  original->Initialize({2.0, 2.0, 0.0}, Covariance(0.2, 0.1));
+  test::Robot robot{{2.0, 2.0, 0.0}, {0.0, 0.0, 0.0}};
+  std::mt19937_64 scan_rng(5);
+  test::Drive(original.get(), *room_, *no_plates_, &robot, 0.6, false, scan_rng);
+  auto same = test::MakeFilter(room_, nullptr, setup_);
+  same->ContinueFrom(*original);
+  test::FilterSetup fewer = setup_;
+  fewer.amcl.max_particles = 150;
+  fewer.amcl.min_particles = 100;
+  auto reconfigured = test::MakeFilter(room_, nullptr, fewer);
+  reconfigured->ContinueFrom(*original);
+  ASSERT_EQ(same->particles().size(), original->particles().size());
+  EXPECT_EQ(reconfigured->particles().size(), original->particles().size()) << "kept until a resampling";
+  EXPECT_EQ(same->Status().laser_updates, original->Status().laser_updates);
+  test::Robot robot_same = robot, robot_reconfigured = robot;
+  std::mt19937_64 rng_same = scan_rng, rng_reconfigured = scan_rng;
+  test::Drive(original.get(), *room_, *no_plates_, &robot, 0.6, false, scan_rng);
+  test::Drive(same.get(), *room_, *no_plates_, &robot_same, 0.6, false, rng_same);
+  test::Drive(reconfigured.get(), *room_, *no_plates_, &robot_reconfigured, 0.6, false, rng_reconfigured);
+  ASSERT_EQ(same->particles().size(), original->particles().size());
+  for (size_t i = 0; i < same->particles().size(); ++i) {
+    ASSERT_EQ(same->particles()[i].pose.x_m, original->particles()[i].pose.x_m) << i;
+    ASSERT_EQ(same->particles()[i].weight, original->particles()[i].weight) << i;
+  }
+  EXPECT_LE(reconfigured->particles().size(), 150u) << "resampled into the new KLD bounds";
+}
+
 }  // namespace
 }  // namespace doorplate_localization

@@ -2,6 +2,7 @@
 // config/<nodelet>.yaml is a parameter of the table with its default (or the value the table documents as
 // the config's), every table is docs/parameters.md's table verbatim, and the shipped configs load. The
 // generated tables are also written to <build>/param_tables/<nodelet>.md (copy them into the docs).
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +19,7 @@
 #include "go_to_room_options.h"
 #include "slam_mapping_options.h"
 #include "text_amcl_options.h"
+#include "text_extractor_options.h"
 #include "wall_follower_options.h"
 
 namespace doorplate_localization {
@@ -49,6 +51,12 @@ class YamlSource : public ParamSource {
   bool Has(const std::string& name) const override { return values_.count(name) > 0; }
   std::string Resolve(const std::string& name) const override { return "/" + node_ + "/" + name; }
   void Warn(const std::string& message) const override { warnings.push_back(message); }
+  std::optional<std::vector<std::string>> GetStringList(const std::string& name) const override {
+    const auto it = values_.find(name);
+    if (it == values_.end()) return std::nullopt;
+    if (!it->second.IsSequence()) throw ParameterError(Resolve(name) + " must be a list of strings");
+    return it->second.as<std::vector<std::string>>();
+  }
 
   std::vector<std::string> Keys() const {
     std::vector<std::string> keys;
@@ -75,10 +83,12 @@ class YamlSource : public ParamSource {
 // Every key of the config is a parameter of `table`, set to its default or to the value the table
 // documents as the config's (ParamSpec::shipped).
 template <typename O>
-void ExpectConfigMatchesTable(const ParamTable<O>& table, const std::string& config) {
+void ExpectConfigMatchesTable(const ParamTable<O>& table, const std::string& config,
+                              const std::vector<std::string>& lists = {}) {
   const YamlSource yaml(kSource + "/config/" + config, "node");
   const O defaults{};
   for (const std::string& key : yaml.Keys()) {
+    if (std::find(lists.begin(), lists.end(), key) != lists.end()) continue;  // read beside the table
     const ParamSpec<O>* spec = nullptr;
     for (const ParamSpec<O>& s : table) {
       if (s.name == key) spec = &s;
@@ -115,6 +125,7 @@ TEST(ParamTables, EveryKeyOfTheShippedConfigsIsAParameterWithTheTablesValue) {
   ExpectConfigMatchesTable(GoToRoomParamTable(), "go_to_room.yaml");
   ExpectConfigMatchesTable(TextAmclParamTable(), "text_amcl.yaml");
   ExpectConfigMatchesTable(SlamMappingParamTable(), "mapping.yaml");
+  ExpectConfigMatchesTable(TextExtractorParamTable(), "text_extractor.yaml", {"validator/known_rooms"});
 }
 
 TEST(ParamTables, DocsParametersMdHoldsEveryTableAsGenerated) {
@@ -123,6 +134,7 @@ TEST(ParamTables, DocsParametersMdHoldsEveryTableAsGenerated) {
   ExpectDocumented(GoToRoomParamTable(), "GoToRoomNodelet");
   ExpectDocumented(TextAmclParamTable(), "TextAmclNodelet");
   ExpectDocumented(SlamMappingParamTable(), "SlamMappingNodelet");
+  ExpectDocumented(TextExtractorParamTable(), "TextExtractorNodelet");
 }
 
 TEST(ParamTables, TheShippedConfigsLoadWithoutWarnings) {
@@ -138,7 +150,12 @@ TEST(ParamTables, TheShippedConfigsLoadWithoutWarnings) {
   for (const std::string& name : TextSlamOptionNames()) {  // the core's defaults, as the offline tools run
     EXPECT_EQ(GetTextSlamOption(name, m.slam), GetTextSlamOption(name, TextSlamOptions())) << name;
   }
-  EXPECT_TRUE(follower.warnings.empty() && amcl.warnings.empty() && mapping.warnings.empty());
+  const YamlSource extractor(kSource + "/config/text_extractor.yaml", "text_extractor");
+  const TextExtractorNodeOptions x = TextExtractorOptionsFrom(extractor);
+  EXPECT_TRUE(x.extractor.validator.known_rooms.empty());
+  EXPECT_EQ(x.extractor.tracker.read_every_n_frames, 1);  // unset in the config: tesseract's schedule
+  EXPECT_TRUE(follower.warnings.empty() && amcl.warnings.empty() && mapping.warnings.empty() &&
+              extractor.warnings.empty());
 }
 
 TEST(ParamTables, UnsetTextAmclParametersAreAmclsDefaultsOneSourceForLoaderAndDocs) {

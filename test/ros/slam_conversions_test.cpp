@@ -131,6 +131,18 @@ TEST(ToPlateSighting, SkipsDetectionsAwayFromTheCentreEmptyOrBroken) {
   EXPECT_NE(why.find("bearing_rad"), std::string::npos);
 }
 
+// Issue 18: a 1 MB detection text reached the mapping session and its log line whole.
+TEST(ToPlateSighting, RefusesATextLongerThanTheLimitNamingIt) {
+  TextDetection d;
+  d.text = std::string(1 << 20, '4');
+  d.crossed_center = true;
+  std::string why;
+  EXPECT_FALSE(ToPlateSighting(d, CameraAxis{0.0, 1.0}, &why));
+  EXPECT_EQ(why, "text: 1048576 bytes, more than the limit of 64 (limits::kMaxPlateTextBytes)");
+  d.text = std::string(64, '4');
+  EXPECT_TRUE(ToPlateSighting(d, CameraAxis{0.0, 1.0}, &why)) << why;
+}
+
 // A tf tree as a lookup: base_link -> laser (0.2 m ahead), base_link -> camera_optical (looking left),
 // odom -> base_link at (1, 2, 0.5); anything else is missing.
 TransformLookup FakeTf() {

@@ -216,6 +216,30 @@ TEST(LocalizerCore, ARefusedMapLeavesTheSessionTheMapAndTheStateAsTheyWere) {
   EXPECT_EQ(&core.session(), before);
 }
 
+// dynamic_reconfigure (issue 19): new filter options replace the session by one continuing from it (the
+// particles stay); refused options change nothing; without a map they are the next map's.
+TEST(LocalizerCore, ReconfigureKeepsTheParticlesRefusedChangesNothingAndBeforeAMapWaits) {
+  LocalizerCore core(AtAPose(), nullptr);
+  TextAmclSetupOptions setup = AtAPose().session.setup;
+  setup.filter.max_particles = setup.filter.min_particles;
+  EXPECT_EQ(core.Reconfigure(setup), "");
+  ASSERT_TRUE(core.UseMaps(Room("", true), "/map").used);
+  EXPECT_EQ(core.session().session().particles().size(), static_cast<size_t>(setup.filter.min_particles))
+      << "the map's session drew the reconfigured max_particles";
+  const std::vector<Particle> particles = core.session().session().particles();
+  setup.filter.update_min_d_m = 0.7;
+  EXPECT_EQ(core.Reconfigure(setup), "");
+  EXPECT_EQ(core.session().session().options().setup.filter.update_min_d_m, 0.7);
+  ASSERT_EQ(core.session().session().particles().size(), particles.size());
+  EXPECT_EQ(core.session().session().particles().back().pose.y_m, particles.back().pose.y_m);
+  const BuildingSession* before = &core.session();
+  setup.filter.resample_interval = 0;
+  EXPECT_NE(core.Reconfigure(setup).find("resample_interval"), std::string::npos);
+  EXPECT_EQ(&core.session(), before);
+  EXPECT_EQ(core.session().session().options().setup.filter.resample_interval,
+            AtAPose().session.setup.filter.resample_interval);
+}
+
 TEST(LocalizerCore, GlobalLocalizationBeforeAMapIsQueuedAndStartsTheFirstMapGlobally) {
   LocalizerCore core(AtAPose(), nullptr);
   EXPECT_FALSE(core.GlobalLocalization()) << "no map: queued, not run";

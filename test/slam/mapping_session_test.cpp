@@ -132,13 +132,20 @@ TEST(MappingSession, ASightingTakesItsRangeFromTheScanNearestItsStampEvenWhenItA
   // Read at 0.9 s: the newer scan is nearer in time.
   const MappingUpdate on_time = session.AddPlates(0.9, {0, 0.5, 0}, {Sighting("203", -M_PI / 2)});
   EXPECT_NEAR(*on_time.plates[0].sighting.range_m, 2.525, 0.01);
-  // Read 5 s after the newest scan: no scan is close enough in time for a range.
-  const MappingUpdate stale = session.AddPlates(6.0, {0, 0.5, 0}, {Sighting("205", -M_PI / 2)});
-  EXPECT_EQ(stale.plates[0].result.outcome, PlateOutcome::kNoRange);
-  // ...and the reason says which rule failed, with the stamps (a scan late behind a solve vs. no echo).
-  EXPECT_NE(stale.plates[0].result.reason.find("no scan within 0.50 s of the reading's stamp 6.00 s (nearest 1.00 s"),
+  // Read at 6 s, 5 s after the newest scan: the scans near its stamp have not arrived yet, so it waits...
+  const MappingUpdate held = session.AddPlates(6.0, {0, 0.5, 0}, {Sighting("205", -M_PI / 2)});
+  EXPECT_TRUE(held.plates.empty());
+  EXPECT_EQ(held.plates_held, 1);
+  EXPECT_EQ(session.held_plates(), 1u);
+  // ...for the first scan at or after its stamp; this one is 4 s later: no scan is close enough in time for a
+  // range, and the reason says which rule failed, with the stamps (a scan late behind a solve vs. no echo).
+  const MappingUpdate decided = session.AddScan(10.0, {0, 0.5, 0}, test::Scan(test::Room(), {0, 0.5, 0}));
+  ASSERT_EQ(decided.plates.size(), 1u);
+  EXPECT_EQ(session.held_plates(), 0u);
+  EXPECT_EQ(decided.plates[0].result.outcome, PlateOutcome::kNoRange);
+  EXPECT_NE(decided.plates[0].result.reason.find("no scan within 0.50 s of the reading's stamp 6.00 s (nearest 10.00 s"),
             std::string::npos)
-      << stale.plates[0].result.reason;
+      << decided.plates[0].result.reason;
   // Read at 1.0 s looking straight up at nothing (an open side beyond the laser's range): no echo there.
   MappingSession open_side(FewParticles(3));
   open_side.AddScan(0.0, {0, 0, 0}, test::Scan({{{-3, -2}, {3, -2}}}, {0, 0, 0}));
@@ -149,6 +156,45 @@ TEST(MappingSession, ASightingTakesItsRangeFromTheScanNearestItsStampEvenWhenItA
   const MappingUpdate given = session.AddPlates(6.0, {0, 0.5, 0}, {Sighting("207", -M_PI / 2, 1.5)});
   EXPECT_EQ(*given.plates[0].sighting.range_m, 1.5);
   EXPECT_EQ(session.counters().plates_used, 3);
+}
+
+// Live, the laser callbacks can fall behind (queued behind a back-end solve) while a detection arrives on
+// time; a bag replays them in that recorded order. The sighting must still get its range from the scan
+// nearest its stamp once that scan arrives.
+TEST(MappingSession, ASightingArrivingBeforeTheScansNearItsStampWaitsForThemAndGetsItsRange) {
+  MappingSession session(FewParticles(3));
+  session.AddScan(0.0, {0, 0, 0}, test::Scan(test::Room(), {0, 0, 0}));
+  const MappingUpdate held = session.AddPlates(0.9, {0, 0.5, 0}, {Sighting("203", -M_PI / 2)});
+  EXPECT_TRUE(held.plates.empty());
+  EXPECT_EQ(held.plates_held, 1);
+  // A scan before its stamp does not decide it (a nearer one may follow)...
+  EXPECT_TRUE(session.AddScan(0.5, {0, 0.25, 0}, test::Scan(test::Room(), {0, 0.25, 0})).plates.empty());
+  EXPECT_EQ(session.held_plates(), 1u);
+  // ...the first at or after it does; the range comes from the scan nearest its stamp (1.0 s, at y = 0.5).
+  const MappingUpdate applied = session.AddScan(1.0, {0, 0.5, 0}, test::Scan(test::Room(), {0, 0.5, 0}));
+  ASSERT_EQ(applied.plates.size(), 1u);
+  ASSERT_TRUE(applied.plates[0].result.used()) << applied.plates[0].result.reason;
+  EXPECT_EQ(applied.plates[0].stamp_s, 0.9);
+  EXPECT_NEAR(*applied.plates[0].sighting.range_m, 2.525, 0.01);
+  const std::vector<SlamLandmark> plates = session.slam().BestLandmarks();
+  ASSERT_EQ(plates.size(), 1u);
+  EXPECT_NEAR(plates[0].position.y, -2.025, 0.05);
+  EXPECT_EQ(session.held_plates(), 0u);
+  EXPECT_EQ(session.counters().plates_held, 1);
+  EXPECT_EQ(session.counters().plates_used, 1);
+}
+
+TEST(MappingSession, HeldSightingsAreBoundedTheOldestIsAppliedWhenTheBoundIsReached) {
+  MappingSession session(FewParticles(3));
+  session.AddScan(0.0, {0, 0, 0}, test::Scan(test::Room(), {0, 0, 0}));
+  for (std::size_t i = 0; i < MappingSession::kMaxHeldPlates; ++i) {
+    ASSERT_EQ(session.AddPlates(5.0 + static_cast<double>(i), {0, 0, 0}, {Sighting("201", -M_PI / 2)}).plates_held, 1);
+  }
+  const MappingUpdate over = session.AddPlates(1000.0, {0, 0, 0}, {Sighting("203", -M_PI / 2)});
+  ASSERT_EQ(over.plates.size(), 1u);  // the oldest (5 s) waits no longer: no scan near it
+  EXPECT_EQ(over.plates[0].stamp_s, 5.0);
+  EXPECT_EQ(over.plates[0].result.outcome, PlateOutcome::kNoRange);
+  EXPECT_EQ(session.held_plates(), MappingSession::kMaxHeldPlates);
 }
 
 TEST(MappingSession, AMalformedSightingRefusesTheWholeCallNamingTheField) {

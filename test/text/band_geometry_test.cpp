@@ -118,5 +118,21 @@ TEST(BandGeometry, BadOptionsAreErrorsNamingTheField) {
   EXPECT_NE(ErrorOf(o).find("margin_px"), std::string::npos);
 }
 
+// Checked at start-up, before any camera_info: the mount and building fields alone, never the intrinsics.
+TEST(BandGeometry, ValidatingTheMountAndBuildingIgnoresTheIntrinsics) {
+  BandGeometryOptions o;
+  o.image_height_px = 0;  // no camera yet
+  o.fy_px = 0.0;
+  EXPECT_NO_THROW(ValidateBandGeometryOptions(o));
+  o.max_distance_m = 0.5;  // below min_distance_m
+  try {
+    ValidateBandGeometryOptions(o);
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("max_distance_m must be finite and >= min_distance_m"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace doorplate_localization

@@ -21,6 +21,9 @@ class AugmentedMclAverages {
   void Update(double log_w_avg);
   // Forgets both averages (after (re)initialization; amcl also does this after every injection).
   void Reset();
+  // Takes `other`'s averages (and whether it has any), keeping this one's alphas: a filter reconfigured with
+  // new alphas goes on from where the old one was.
+  void TakeAveragesFrom(const AugmentedMclAverages& other);
 
   bool initialized() const { return initialized_; }
   // w_fast / w_slow; 1 before the first measurement.

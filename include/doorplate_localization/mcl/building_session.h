@@ -47,6 +47,12 @@ class BuildingSession {
   // unknown start_floor, or a floor whose map the session refuses ("floor '3': ...").
   BuildingSession(const BuildingSessionOptions& options, std::shared_ptr<const BuildingMaps> maps);
 
+  // Goes on from `previous` with new session options (dynamic_reconfigure): every floor's session continues
+  // from its previous one (TextAmclSession's continuing constructor: the particles are kept); the floor
+  // belief, current floor and replay window carry over. Throws std::invalid_argument ("floor '3': ...")
+  // as the other constructor; `previous` is never changed.
+  BuildingSession(const BuildingSession& previous, const TextAmclSessionOptions& session);
+
   // amcl's initialpose on a floor (`floor` index): that floor becomes current and certain.
   void Initialize(int floor, const Pose2D& mean, const Eigen::Matrix3d& covariance);
   // amcl's global_localization: the floor is unknown again (uniform belief), the current floor's session

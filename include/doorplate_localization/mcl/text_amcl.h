@@ -168,6 +168,12 @@ class TextAmcl {
   // Reweights (and maybe reseeds) with a doorplate reading, at any time. Throws std::invalid_argument
   // for an invalid reading (ValidatePlateReading); see PlateUpdateResult for what happened.
   PlateUpdateResult UpdatePlate(const PlateReading& reading);
+  // Goes on from `previous` (a filter on the same map) under this filter's options and models: takes its
+  // particles and weights, odometry reference, pending and forced updates, resampling count, recovery
+  // averages (under this filter's alphas), health state, counters and random stream. The particle count
+  // moves to this filter's KLD bounds at its next resampling; its health rules apply from its next update.
+  // (amcl's dynamic_reconfigure instead redraws the particles around the last published pose.)
+  void ContinueFrom(const TextAmcl& previous);
   // The next odometry/scan pair updates the filter even without motion (amcl's request_nomotion_update).
   void ForceUpdate() { force_update_ = true; }
 

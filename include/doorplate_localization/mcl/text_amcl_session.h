@@ -122,6 +122,13 @@ class TextAmclSession {
   TextAmclSession(const TextAmclSessionOptions& options, const OccupancyGrid& map,
                   std::shared_ptr<const TextMap> text_map);
 
+  // Goes on from `previous` (a session on the same `map`, whose text map it keeps) under new options, as
+  // dynamic_reconfigure asks: the filter and its models are rebuilt from `options` and continue from the
+  // previous filter (TextAmcl::ContinueFrom: the particles are kept); the odometry history, pending
+  // readings, recent scans, unknown rooms, counters, estimate and map -> odom carry over. Throws
+  // std::invalid_argument as the other constructor; `previous` is never changed.
+  TextAmclSession(const TextAmclSessionOptions& options, const OccupancyGrid& map, const TextAmclSession& previous);
+
   // Restart the particles (amcl's initialpose and global_localization). MapToOdom() is unset until the
   // next update; the odometry history and pending readings are kept.
   void Initialize(const Pose2D& mean, const Eigen::Matrix3d& covariance);

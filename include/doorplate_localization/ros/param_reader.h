@@ -79,6 +79,14 @@ class RosParamSource : public ParamSource {
   bool Has(const std::string& name) const override { return nh_.hasParam(name); }
   std::string Resolve(const std::string& name) const override { return nh_.resolveName(name); }
   void Warn(const std::string& message) const override { ROS_WARN_STREAM(message); }
+  std::optional<std::vector<std::string>> GetStringList(const std::string& name) const override {
+    if (!nh_.hasParam(name)) return std::nullopt;
+    std::vector<std::string> list;
+    if (!nh_.getParam(name, list)) {  // not a list, or an entry is not a string (an unquoted 201 is an int)
+      throw ParameterError(nh_.resolveName(name) + " must be a list of strings (quote room numbers: ['201', '202A'])");
+    }
+    return list;
+  }
 
  private:
   ros::NodeHandle nh_;

@@ -187,6 +187,13 @@ class ParamSource {
   virtual bool Has(const std::string& name) const = 0;
   virtual std::string Resolve(const std::string& name) const = 0;  // "/amcl/kld_err"
   virtual void Warn(const std::string& message) const = 0;
+  // A list of strings (the few list parameters, read outside the tables, e.g. ~validator/known_rooms);
+  // nullopt if unset. Throws ParameterError naming it when it is not a list of strings, or when this source
+  // holds no lists.
+  virtual std::optional<std::vector<std::string>> GetStringList(const std::string& name) const {
+    if (!Has(name)) return std::nullopt;
+    throw ParameterError(Resolve(name) + ": lists cannot be given here");
+  }
 };
 
 // Reads every parameter of `table` from `source` into `*o` over its current values (the defaults, or

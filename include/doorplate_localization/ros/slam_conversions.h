@@ -47,7 +47,8 @@ std::string ToRangeScan(const sensor_msgs::LaserScan& msg, const LaserMounting& 
 // A detection as a SLAM plate sighting: the bearing composed with the camera axis (base_link, CCW:
 // camera.yaw_rad + camera.bearing_sign * bearing_rad, wrapped to (-pi, pi]), the confidence, no range
 // (the mapping session takes it from the scan nearest in time). nullopt, with *why_not set, for detections the mapper does not
-// use: not at the image-centre crossing, an empty text, or a detection ValidateTextDetection rejects.
+// use: not at the image-centre crossing, an empty text, a text longer than limits::kMaxPlateTextBytes, or a
+// detection ValidateTextDetection rejects.
 std::optional<PlateSighting> ToPlateSighting(const TextDetection& msg, const CameraAxis& camera,
                                              std::string* why_not);
 

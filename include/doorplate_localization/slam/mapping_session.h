@@ -19,8 +19,13 @@
 //  - Plate sightings (AddPlates) carry the odometry at their own stamp (tf at the detection's stamp, the
 //    simulator's odometry) and are applied when they arrive, tied to the last processed scan by the
 //    odometry between the two (either way in time: a sighting the OCR delivers after newer scans is placed
-//    where the robot was at its stamp). They are not held back for a newer scan: the filter's weights and
-//    random draws then follow the order of arrival, the order the nodelet sees live.
+//    where the robot was at its stamp); the filter's weights and random draws follow the order of arrival,
+//    the order the nodelet sees live. One exception: a sighting without range_m that has no scan within
+//    plate_range_max_scan_age_s of its stamp while every scan received is older than it (the scans near
+//    its stamp have not arrived yet: live, a laser callback queued behind a back-end solve, or a bag whose
+//    detections were recorded before those scans) is held and applied by the first AddScan that takes a
+//    scan stamped at or after it (in that call's MappingUpdate::plates). At most kMaxHeldPlates wait;
+//    beyond that the oldest is applied at once.
 //  - Plate range (a sighting without range_m): PlateRangeAlongBearing (text_slam.h, slam.range_beam_window_rad)
 //    in the received scan nearest in time to the sighting (ties: the newer), if within
 //    plate_range_max_scan_age_s of it; else the sighting has no range (PlateOutcome::kNoRange).
@@ -34,6 +39,7 @@
 // slam.slam.seed and input sequence.
 #pragma once
 
+#include <cstddef>
 #include <deque>
 #include <optional>
 #include <string>
@@ -74,7 +80,8 @@ struct MappingUpdate {
   bool scan_taken = false;          // AddScan: the scan was accepted (stamp in order, not throttled away)
   bool scan_processed = false;      // AddScan: the filter processed it (a new trajectory pose / graph node)
   std::string scan_refused_reason;  // AddScan: why it was refused ("" when taken or throttled)
-  std::vector<MappingPlateOutcome> plates;  // sightings applied by this call, stamp order
+  std::vector<MappingPlateOutcome> plates;  // sightings applied by this call (AddScan: held ones), stamp order
+  int plates_held = 0;              // AddPlates: sightings held for a scan near their stamp (see the rules)
   bool solved = false;              // Solve() ran: Map(), GetTextMap(), BackEndResult() are new
   bool map_to_odom_changed = false; // MapToOdom() was recomputed
 };
@@ -84,12 +91,15 @@ struct MappingSessionCounters {
   long long scans_refused = 0;      // stamp not after the previous scan's
   long long scans_processed = 0;
   long long plate_sightings = 0;    // given to AddPlates
+  long long plates_held = 0;        // held for a scan near their stamp (applied later, or still waiting)
   long long plates_used = 0;        // TextSlamPlateResult::used
   long long solves = 0;
 };
 
 class MappingSession {
  public:
+  static constexpr std::size_t kMaxHeldPlates = 256;  // sightings waiting for a scan near their stamp
+
   // Throws std::invalid_argument naming the field of a bad option.
   explicit MappingSession(const MappingSessionOptions& options);
 
@@ -122,6 +132,8 @@ class MappingSession {
   const Pose2D& LastProcessedOdometry() const { return slam_.slam().LastProcessedOdometry(); }
   const TextSlam& slam() const { return slam_; }
   const MappingSessionCounters& counters() const { return counters_; }
+  // Sightings held for a scan near their stamp (not yet applied).
+  std::size_t held_plates() const { return held_.size(); }
   const MappingSessionOptions& options() const { return options_; }
 
  private:
@@ -129,12 +141,22 @@ class MappingSession {
     double stamp_s;
     RangeScan scan;
   };
+  struct HeldPlate {
+    double stamp_s;
+    Pose2D base_in_odom;
+    PlateSighting sighting;
+  };
   // nullopt with *why set (which of the two rules failed, with the stamps) when there is no range.
   std::optional<double> RangeFor(double stamp_s, double bearing_rad, std::string* why) const;
+  // True when a scan nearer in time to `stamp_s` may still arrive: none within the age limit, none newer.
+  bool ScanMayStillCome(double stamp_s) const;
+  // Range rule + TextSlam::AddPlate; the outcome goes to update->plates. Returns whether it was used.
+  bool ApplyPlate(double stamp_s, const Pose2D& base_in_odom, const PlateSighting& given, MappingUpdate* update);
   void RefreshMapToOdom(MappingUpdate* update);
 
   const MappingSessionOptions options_;
   TextSlam slam_;
+  std::deque<HeldPlate> held_;             // waiting for a scan near their stamp, arrival order
   std::deque<TimedScan> scans_;            // received scans within scan_history_s of the newest, newest last
   std::optional<double> last_scan_stamp_s_;
   std::optional<double> last_processed_stamp_s_, last_solve_stamp_s_;  // scan stamps

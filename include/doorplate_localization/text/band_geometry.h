@@ -37,6 +37,10 @@ struct BandGeometryOptions {
 // behind the camera, or when the band lies entirely outside the image.
 BandOptions BandFromGeometry(const BandGeometryOptions& options);
 
+// The mount and building fields alone (not the intrinsics, which come with each camera_info): throws
+// std::invalid_argument "BandFromGeometry: <field> must be ..." as BandFromGeometry would.
+void ValidateBandGeometryOptions(const BandGeometryOptions& options);
+
 // The row (possibly outside the image) at which a point `height_m` above the floor on a wall
 // `distance_m` away is seen; false when it is behind the camera.
 bool RowOfWallPoint(const BandGeometryOptions& options, double height_m, double distance_m, double* row_px);

@@ -6,27 +6,27 @@
 //   DIR/map.text_map.yaml           the text-landmark map (docs/text-map-format.md)
 //   DIR/trajectory.txt              `scan_index x y theta` per processed scan (posterior mean trajectory,
 //                                   RbpfSlam::MeanTrajectory, as doorplate_map_log writes it)
-// all atomically, and a progress line on stderr every few seconds. The bag is read twice: all tf first
+// all atomically, and a progress line on stderr every few seconds. The bag is read (bag_reader.h) twice: all tf first
 // (so a transform recorded after a scan still serves it), then the scans and detections in time order.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include <rosbag/bag.h>
-#include <rosbag/view.h>
 #include <sensor_msgs/LaserScan.h>
 #include <tf2/buffer_core.h>
 #include <tf2/exceptions.h>
-#include <tf2_msgs/TFMessage.h>
 
+#include "bag_reader.h"
 #include "cli_app.h"
 #include "map_tool_output.h"
 #include "output_guard.h"
+#include "progress_line.h"
 #include "doorplate_localization/TextDetectionArray.h"
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/maps/text_map.h"
@@ -58,14 +58,6 @@ struct Args {
 
 std::string Topic(const std::string& name) { return name.empty() || name[0] == '/' ? name : "/" + name; }
 
-// A bag may hold a topic under its global name ("/scan") or, recorded by some tools, without the leading
-// slash ("scan"): query both.
-std::vector<std::string> BothSpellings(const std::vector<std::string>& topics) {
-  std::vector<std::string> both;
-  for (const std::string& t : topics) both.push_back(t), both.push_back(t.substr(1));
-  return both;
-}
-
 void AddOptions(CLI::App* app, Args* args) {
   app->footer(kNotes);
   app->add_option("BAG", args->bag, "the rosbag")->required();
@@ -83,8 +75,8 @@ void AddOptions(CLI::App* app, Args* args) {
                   "~maxRange; 0 = the scan's range_max)")->capture_default_str()->check(tools::Number(0.0));
   app->add_option("--min-valid-beams", args->frames.min_valid_beams, "a scan with fewer valid beams is dropped")
       ->capture_default_str()->transform(tools::WholeNumber(0));
-  app->add_option("--progress-s", args->progress_s, "a progress line on stderr every this many seconds")
-      ->capture_default_str()->check(tools::Number());
+  app->add_option("--progress-s", args->progress_s, "a progress line on stderr every this many seconds (rewritten in "
+                  "place twice a second on a terminal; 0: none)")->capture_default_str()->check(tools::Number(0.0));
   app->callback([args] {
     args->scan_topic = Topic(args->scan_topic);
     args->detections_topic = Topic(args->detections_topic);
@@ -97,29 +89,21 @@ void AddOptions(CLI::App* app, Args* args) {
   });
 }
 
-// Every /tf and /tf_static transform of the bag, kept for the whole bag's span.
-std::unique_ptr<tf2::BufferCore> LoadTf(rosbag::Bag& bag) {
-  rosbag::View all(bag);
-  const double span_s = (all.getEndTime() - all.getBeginTime()).toSec();
-  auto buffer = std::make_unique<tf2::BufferCore>(ros::Duration(span_s + 60.0));
-  rosbag::View tf_view(bag, rosbag::TopicQuery(BothSpellings({"/tf", "/tf_static"})));
-  for (const rosbag::MessageInstance& m : tf_view) {
-    const auto msg = m.instantiate<tf2_msgs::TFMessage>();
-    if (!msg) continue;
-    const bool is_static = Topic(m.getTopic()) == "/tf_static";
-    for (const geometry_msgs::TransformStamped& t : msg->transforms) {
-      buffer->setTransform(t, "bag", is_static);  // a malformed transform is logged by tf2 and skipped
-    }
-  }
-  return buffer;
-}
-
 struct Counters {
   long scans = 0, scans_dropped = 0, arrays = 0, arrays_dropped = 0, plates_used = 0, plates_ignored = 0;
 };
 
 void Warn(long* count, const std::string& topic, const std::string& problem) {
   if (++*count <= 5) std::fprintf(stderr, "doorplate_map_bag: %s: %s; dropping it\n", topic.c_str(), problem.c_str());
+}
+
+void CountPlates(const std::vector<dl::MappingPlateOutcome>& outcomes, Counters* n) {
+  for (const dl::MappingPlateOutcome& o : outcomes) {
+    ++(o.result.used() ? n->plates_used : n->plates_ignored);
+    if (!o.result.used()) {
+      std::fprintf(stderr, "doorplate_map_bag: plate '%s' not used: %s\n", o.sighting.text.c_str(), o.result.reason.c_str());
+    }
+  }
 }
 
 int MapBag(const Args& args) {
@@ -130,8 +114,7 @@ int MapBag(const Args& args) {
                                   {"--out-dir", base + ".text_map.yaml"}, {"--out-dir", args.out_dir + "/trajectory.txt"}});
   dl::MappingSession session(args.options);           // bad options (--set num_particles=1e9) before the bag
   std::filesystem::create_directories(args.out_dir);  // fails early, before a long run, if it cannot
-  rosbag::Bag bag(args.bag, rosbag::bagmode::Read);   // throws rosbag::BagException naming the problem
-  const std::unique_ptr<tf2::BufferCore> tf = LoadTf(bag);
+  const std::unique_ptr<tf2::BufferCore> tf = dl::ReadBagTf(args.bag);  // BagReadError names the bag
   const dl::TransformLookup lookup = [&tf](const std::string& target, const std::string& source,
                                            const ros::Time& stamp, std::string* problem)
       -> std::optional<geometry_msgs::Transform> {
@@ -145,50 +128,42 @@ int MapBag(const Args& args) {
 
   std::vector<std::string> topics{args.scan_topic};
   if (!args.no_text) topics.push_back(args.detections_topic);
-  rosbag::View view(bag, rosbag::TopicQuery(BothSpellings(topics)));
-  const std::size_t total = view.size();
   const dl::RbpfSlam& filter = session.slam().slam();
   Counters n;
-  std::size_t done = 0;
-  double next_progress = args.progress_s;
-  for (const rosbag::MessageInstance& m : view) {
-    ++done;
+  tools::ProgressLine progress({args.progress_s});
+  double driven_m = 0.0;  // odometry path length over the scans used
+  std::optional<dl::Pose2D> last_odom;
+  dl::ReadBag(args.bag, topics, [&](const rosbag::MessageInstance& m, const dl::BagPosition& at) {
     if (const auto scan_msg = m.instantiate<sensor_msgs::LaserScan>()) {
       ++n.scans;
       dl::RangeScan scan;
       dl::Pose2D odom_pose;
       const std::string problem = dl::PrepareSlamScan(*scan_msg, lookup, args.frames, &scan, &odom_pose);
-      if (!problem.empty()) {
-        Warn(&n.scans_dropped, args.scan_topic, problem);
-        continue;
-      }
+      if (!problem.empty()) return Warn(&n.scans_dropped, args.scan_topic, problem);
+      if (last_odom) driven_m += dl::Norm(odom_pose.Position() - last_odom->Position());
+      last_odom = odom_pose;
       const dl::MappingUpdate update = session.AddScan(scan_msg->header.stamp.toSec(), odom_pose, scan);
       if (!update.scan_refused_reason.empty()) Warn(&n.scans_dropped, args.scan_topic, update.scan_refused_reason);
+      CountPlates(update.plates, &n);  // sightings recorded before the scans near their stamp
     } else if (const auto array = m.instantiate<dl::TextDetectionArray>()) {
       ++n.arrays;
       std::vector<dl::PlateSighting> sightings;
       std::vector<std::string> rejected;
       dl::Pose2D odom_pose;
       const std::string problem = dl::PrepareSlamSightings(*array, lookup, args.frames, &sightings, &odom_pose, &rejected);
-      if (!problem.empty()) {
-        Warn(&n.arrays_dropped, args.detections_topic, problem);
-        continue;
-      }
+      if (!problem.empty()) return Warn(&n.arrays_dropped, args.detections_topic, problem);
       for (const std::string& r : rejected) std::fprintf(stderr, "doorplate_map_bag: detection %s\n", r.c_str());
-      for (const dl::MappingPlateOutcome& o : session.AddPlates(array->header.stamp.toSec(), odom_pose, sightings).plates) {
-        ++(o.result.used() ? n.plates_used : n.plates_ignored);
-        if (!o.result.used()) std::fprintf(stderr, "doorplate_map_bag: plate '%s' not used: %s\n", o.sighting.text.c_str(),
-                                           o.result.reason.c_str());
-      }
+      CountPlates(session.AddPlates(array->header.stamp.toSec(), odom_pose, sightings).plates, &n);
     }
-    if (clock.Seconds() >= next_progress) {
-      next_progress += args.progress_s;
+    if (progress.Due(clock.Seconds())) {
       const dl::RbpfSlamStats& s = filter.stats();
-      std::fprintf(stderr, "doorplate_map_bag: message %zu/%zu, scans %d processed of %ld, plates %ld, %d landmarks, "
-                   "neff %.1f, %.1f s, peak RSS %.0f MB\n", done, total, s.scans_processed, n.scans, n.plates_used,
-                   session.slam().num_landmarks(), s.last_neff, clock.Seconds(), tools::PeakRssMb());
+      progress.Show("doorplate_map_bag: message %zu/%zu, %.1f m driven, scans %d processed of %ld, plates read %ld "
+                    "(used %ld), %d landmarks, neff %.1f, %.1f s, peak RSS %.0f MB", at.index + 1, at.total, driven_m,
+                    s.scans_processed, n.scans, n.plates_used + n.plates_ignored, n.plates_used,
+                    session.slam().num_landmarks(), s.last_neff, clock.Seconds(), tools::PeakRssMb());
     }
-  }
+  });
+  progress.Finish();
   if (filter.stats().scans_processed == 0) {
     throw std::runtime_error(args.bag + ": no usable scan on " + args.scan_topic + " (" + std::to_string(n.scans) +
                              " messages, " + std::to_string(n.scans_dropped) + " dropped); nothing written");
@@ -208,19 +183,9 @@ int MapBag(const Args& args) {
   return 0;
 }
 
-// rosbag's errors (rosbag::BagException "Error reading version line", a message that does not deserialize)
-// do not name the bag: they are rethrown with its path.
-int Run(const Args& args) {
-  try {
-    return MapBag(args);
-  } catch (const ros::Exception& e) {
-    throw std::runtime_error(args.bag + ": not a readable bag: " + e.what());
-  }
-}
-
 }  // namespace
 
-// rosbag::BagException, bad options, write errors: all name the file (exit status 1).
+// BagReadError (rosbag's errors, naming the bag), bad options, write errors: all name the file (exit status 1).
 int main(int argc, char** argv) {
-  return tools::RunTool("doorplate_map_bag", kDescription, AddOptions, Run, argc, argv);
+  return tools::RunTool("doorplate_map_bag", kDescription, AddOptions, MapBag, argc, argv);
 }

@@ -1,15 +1,13 @@
 #include "mission_bags.h"
 
 #include <algorithm>
-#include <stdexcept>
 
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <nav_msgs/Odometry.h>
-#include <rosbag/bag.h>
-#include <rosbag/view.h>
 #include <std_msgs/String.h>
 #include <tf2/utils.h>
 
+#include "bag_reader.h"
 #include "doorplate_localization/TextDetectionArray.h"
 
 namespace doorplate_localization {
@@ -28,14 +26,7 @@ void AddText(const rosbag::MessageInstance& m, std::vector<StampedText>* out) {
 
 RecordedRun ReadRecordedRun(const std::string& bag_path) {
   RecordedRun run;
-  rosbag::Bag bag;
-  try {
-    bag.open(bag_path, rosbag::bagmode::Read);
-  } catch (const rosbag::BagException& e) {
-    throw std::runtime_error(bag_path + ": cannot open the bag: " + e.what());
-  }
-  for (const rosbag::MessageInstance& m : rosbag::View(bag)) {
-    // rosbag record stores the names as given ("odom" or "/odom"): compare without the leading slash.
+  ReadBag(bag_path, {}, [&run](const rosbag::MessageInstance& m, const BagPosition&) {
     const std::string topic = m.getTopic().rfind('/', 0) == 0 ? m.getTopic().substr(1) : m.getTopic();
     if (topic == "base_pose_ground_truth") {
       if (auto msg = m.instantiate<nav_msgs::Odometry>()) {
@@ -64,10 +55,10 @@ RecordedRun ReadRecordedRun(const std::string& bag_path) {
     } else if (topic == "go_to_room") {
       AddText(m, &run.go_to_room_requests);
     }
-  }
+  });
   if (run.truth.empty() || run.odometry.empty()) {
-    throw std::runtime_error(bag_path + ": needs base_pose_ground_truth and odom messages, found " +
-                             std::to_string(run.truth.size()) + " and " + std::to_string(run.odometry.size()));
+    throw BagReadError(bag_path + ": needs base_pose_ground_truth and odom messages, found " +
+                       std::to_string(run.truth.size()) + " and " + std::to_string(run.odometry.size()));
   }
   const auto by_time = [](const StampedPose& a, const StampedPose& b) { return a.time_s < b.time_s; };
   for (auto* track : {&run.truth, &run.odometry, &run.estimate}) std::stable_sort(track->begin(), track->end(), by_time);

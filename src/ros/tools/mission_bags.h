@@ -37,8 +37,8 @@ struct RecordedRun {
   std::vector<StampedText> go_to_room_requests;  // go_to_room
 };
 
-// Reads every topic above that the bag holds. Throws std::runtime_error naming the bag if it cannot be
-// opened or holds no base_pose_ground_truth / odom messages.
+// Reads every topic above that the bag holds (bag_reader.h). Throws BagReadError naming the bag if it cannot
+// be read or holds no base_pose_ground_truth / odom messages.
 RecordedRun ReadRecordedRun(const std::string& bag_path);
 
 // The pose of `track` nearest in time to `time_s` (track sorted by time, not empty).

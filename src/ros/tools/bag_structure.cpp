@@ -1,0 +1,166 @@
+#include "bag_structure.h"
+
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <vector>
+
+namespace doorplate_localization {
+namespace {
+
+constexpr char kOpBagHeader = 0x03, kOpChunk = 0x05, kOpConnection = 0x07, kOpIndexData = 0x04, kOpChunkInfo = 0x06;
+
+template <typename T>
+T Read(const std::string& bytes, std::size_t at) {
+  T value{};
+  std::memcpy(&value, bytes.data() + at, sizeof(T));
+  return value;
+}
+
+// A record header's fields (name -> value bytes); "" or the problem.
+std::string ParseFields(const std::string& header, std::map<std::string, std::string>* fields) {
+  std::size_t at = 0;
+  while (at < header.size()) {
+    if (header.size() - at < 4) return "a header field's length is cut off";
+    const std::uint32_t length = Read<std::uint32_t>(header, at);
+    at += 4;
+    if (length > header.size() - at) return "a header field of " + std::to_string(length) + " bytes overruns its header";
+    const std::string field = header.substr(at, length);
+    at += length;
+    const std::size_t eq = field.find('=');
+    if (eq == std::string::npos) return "a header field without '='";
+    (*fields)[field.substr(0, eq)] = field.substr(eq + 1);
+  }
+  return "";
+}
+
+struct Chunk {
+  std::uint64_t start = 0;  // offset of its record
+  std::uint32_t size = 0;   // uncompressed bytes
+};
+
+// Bytes [from, from + n) of what is walked (the file, or an uncompressed chunk's data); n is within its size.
+using ReadBytes = std::function<std::string(std::uint64_t from, std::uint32_t n)>;
+
+// What the walk of one sequence of records found (top level: the file; inside: one uncompressed chunk).
+struct Walk {
+  std::uint64_t index_pos = 0;
+  std::set<std::uint64_t> record_starts, chunk_positions;
+  std::vector<Chunk> chunks;
+};
+
+// Walks the records in [begin, end) of `read`; "" or the first problem. `where` names the place of offsets.
+std::string WalkRecords(const ReadBytes& read, std::uint64_t begin, std::uint64_t end, const std::string& where,
+                        Walk* walk) {
+  std::ostringstream problem;
+  for (std::uint64_t at = begin; at < end;) {
+    walk->record_starts.insert(at);
+    const std::uint64_t left = end - at;
+    problem << where << "record at byte " << at << ": ";
+    if (left < 4) return problem.str() + "cut off";
+    const auto header_length = Read<std::uint32_t>(read(at, 4), 0);
+    if (header_length > left - 4) {
+      problem << "header length " << header_length << ", but only " << left - 4 << " bytes follow";
+      return problem.str();
+    }
+    std::map<std::string, std::string> fields;
+    std::string fields_problem = ParseFields(read(at + 4, header_length), &fields);
+    if (!fields_problem.empty()) return problem.str() + fields_problem;
+    const std::uint64_t data_at = at + 4 + header_length;
+    if (end - data_at < 4) return problem.str() + "data length cut off";
+    const auto data_length = Read<std::uint32_t>(read(data_at, 4), 0);
+    if (data_length > end - data_at - 4) {
+      problem << "data length " << data_length << ", but only " << end - data_at - 4 << " bytes follow";
+      return problem.str();
+    }
+    const std::string op = fields["op"];
+    const char code = op.size() == 1 ? op[0] : 0;
+    const auto field_u64 = [&fields](const char* name) {
+      const std::string& v = fields[name];
+      return v.size() == 8 ? Read<std::uint64_t>(v, 0) : v.size() == 4 ? Read<std::uint32_t>(v, 0) : ~0ull;
+    };
+    if (code == kOpBagHeader) {
+      walk->index_pos = field_u64("index_pos");
+    } else if (code == kOpConnection) {  // its data is the connection header, fields as well
+      std::map<std::string, std::string> connection;
+      fields_problem = ParseFields(read(data_at + 4, data_length), &connection);
+      if (!fields_problem.empty()) return problem.str() + "connection header: " + fields_problem;
+    } else if (code == kOpChunk) {
+      const std::uint64_t size = field_u64("size");
+      const bool compressed = fields["compression"] != "none";
+      if (size > kMaxBagChunkBytes || (!compressed && size > data_length)) {
+        problem << "chunk of " << size << " bytes uncompressed, more than "
+                << (compressed ? "the limit of " + std::to_string(kMaxBagChunkBytes) + " (kMaxBagChunkBytes)"
+                               : "its " + std::to_string(data_length) + " bytes of data");
+        return problem.str();
+      }
+      walk->chunks.push_back({at, static_cast<std::uint32_t>(size)});
+      if (!compressed) {  // its records (connections, messages): rosbag parses their headers too
+        const std::string data = read(data_at + 4, static_cast<std::uint32_t>(size));
+        Walk inside;
+        const std::string inner = WalkRecords([&data](std::uint64_t from, std::uint32_t n) { return data.substr(from, n); },
+                                              0, data.size(), where + "chunk at byte " + std::to_string(at) + ": ", &inside);
+        if (!inner.empty()) return inner;
+      }
+    } else if (code == kOpChunkInfo) {
+      walk->chunk_positions.insert(field_u64("chunk_pos"));
+    } else if (code == kOpIndexData && !walk->chunks.empty()) {
+      const std::string data = read(data_at + 4, data_length);  // (time, offset) pairs: 12 bytes each
+      for (std::size_t e = 0; e + 12 <= data.size(); e += 12) {
+        if (Read<std::uint32_t>(data, e + 8) >= walk->chunks.back().size) {
+          problem << "index entry offset " << Read<std::uint32_t>(data, e + 8) << " beyond its chunk of "
+                  << walk->chunks.back().size << " bytes";
+          return problem.str();
+        }
+      }
+    }
+    problem.str("");
+    at = data_at + 4 + data_length;
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string CheckBagStructure(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "";  // rosbag names a file it cannot open
+  in.seekg(0, std::ios::end);
+  const std::uint64_t file_size = static_cast<std::uint64_t>(in.tellg());
+  in.seekg(0);
+  // The version line as rosbag reads it: up to the first newline, "#ROS<name> V<major>.<minor>".
+  std::string version_line;
+  std::getline(in, version_line);
+  if (!in) return "";  // no newline: rosbag fails on what follows
+  char name[100];
+  int major = 0, minor = 0;
+  if (std::sscanf(version_line.c_str(), "#ROS%99s V%d.%d", name, &major, &minor) != 3) return "";  // rosbag says so
+  if (major != 2 || minor != 0) {
+    return "bag format version " + std::to_string(major) + "." + std::to_string(minor) +
+           ": only 2.0 (every bag since ROS C Turtle, 2010) is read";
+  }
+  const std::uint64_t records_at = version_line.size() + 1;
+  const ReadBytes read = [&in](std::uint64_t from, std::uint32_t n) {
+    std::string bytes(n, '\0');
+    in.clear();
+    in.seekg(static_cast<std::streamoff>(from));
+    in.read(bytes.data(), n);
+    return bytes;
+  };
+  Walk walk;
+  const std::string problem = WalkRecords(read, records_at, file_size, "", &walk);
+  if (!problem.empty()) return problem;
+  if (walk.index_pos != 0 && walk.index_pos != file_size && !walk.record_starts.count(walk.index_pos)) {
+    return "bag header: index_pos " + std::to_string(walk.index_pos) + " is not the start of a record";
+  }
+  for (const std::uint64_t pos : walk.chunk_positions) {
+    if (!walk.record_starts.count(pos)) return "chunk info: chunk_pos " + std::to_string(pos) + " is not the start of a record";
+  }
+  return "";
+}
+
+}  // namespace doorplate_localization

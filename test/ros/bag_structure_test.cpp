@@ -1,0 +1,127 @@
+#include "bag_structure.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include <rosbag/bag.h>
+#include <std_msgs/String.h>
+
+namespace doorplate_localization {
+namespace {
+
+std::string TempBag(const std::string& name) { return ::testing::TempDir() + "/bag_structure_" + name + ".bag"; }
+
+std::string ReadAll(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void WriteAll(const std::string& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+std::string GoodBag(const std::string& name, rosbag::compression::CompressionType compression) {
+  const std::string path = TempBag(name);
+  rosbag::Bag bag(path, rosbag::bagmode::Write);
+  bag.setCompression(compression);
+  std_msgs::String text;
+  for (int i = 0; i < 3; ++i) {
+    text.data = "plate " + std::to_string(i);
+    bag.write("/text", ros::Time(1.0 + i), text);
+  }
+  bag.close();
+  return path;
+}
+
+std::uint32_t U32(const std::string& bytes, std::size_t at) {
+  std::uint32_t value = 0;
+  std::memcpy(&value, bytes.data() + at, 4);
+  return value;
+}
+
+// The offset of the first top-level record whose header has the field op=<op>.
+std::size_t RecordWithOp(const std::string& bytes, char op) {
+  for (std::size_t at = 13; at + 4 <= bytes.size();) {
+    const std::uint32_t header_length = U32(bytes, at);
+    if (bytes.substr(at + 4, header_length).find(std::string("op=") + op) != std::string::npos) return at;
+    at += 8 + header_length + U32(bytes, at + 4 + header_length);
+  }
+  return std::string::npos;
+}
+
+TEST(CheckBagStructureTest, AcceptsBagsRosbagWritesAndLeavesOtherFilesToRosbag) {
+  EXPECT_EQ(CheckBagStructure(GoodBag("none", rosbag::compression::Uncompressed)), "");
+  EXPECT_EQ(CheckBagStructure(GoodBag("bz2", rosbag::compression::BZ2)), "");
+  EXPECT_EQ(CheckBagStructure(GoodBag("lz4", rosbag::compression::LZ4)), "");
+  const std::string garbage = TempBag("garbage");
+  WriteAll(garbage, "no bag at all\n");
+  EXPECT_EQ(CheckBagStructure(garbage), "");
+  EXPECT_EQ(CheckBagStructure(TempBag("missing")), "");
+}
+
+// The fuzzer's find: a connection record whose header length says 2.3 GB; rosbag allocated it.
+TEST(CheckBagStructureTest, RefusesARecordLongerThanTheFileNamingItsOffset) {
+  const std::string path = GoodBag("long_header", rosbag::compression::Uncompressed);
+  std::string bytes = ReadAll(path);
+  const std::size_t record = RecordWithOp(bytes, '\x07');  // a connection record
+  ASSERT_NE(record, std::string::npos);
+  const std::uint32_t huge = 2315255808u;
+  std::memcpy(bytes.data() + record, &huge, 4);
+  WriteAll(path, bytes);
+  const std::string problem = CheckBagStructure(path);
+  EXPECT_NE(problem.find("record at byte " + std::to_string(record) + ": header length 2315255808, but only"),
+            std::string::npos) << problem;
+}
+
+// The fuzzer's second find: ros::Header::parse reads a field as long as its length says, past its header.
+TEST(CheckBagStructureTest, RefusesAHeaderFieldRunningPastItsHeader) {
+  const std::string path = GoodBag("long_field", rosbag::compression::Uncompressed);
+  std::string bytes = ReadAll(path);
+  const std::size_t record = RecordWithOp(bytes, '\x07');
+  ASSERT_NE(record, std::string::npos);
+  const std::uint32_t past_the_header = U32(bytes, record);  // the first field's length: its whole header
+  std::memcpy(bytes.data() + record + 4, &past_the_header, 4);
+  WriteAll(path, bytes);
+  const std::string problem = CheckBagStructure(path);
+  EXPECT_NE(problem.find("record at byte " + std::to_string(record) + ": a header field of " +
+                         std::to_string(past_the_header) + " bytes overruns its header"),
+            std::string::npos) << problem;
+}
+
+// The fuzzer's third find: rosbag's version line ends at the first newline, wherever that is ("#ROSBAG V2.0 "
+// and more); the records start after it. Formats other than 2.0 are refused.
+TEST(CheckBagStructureTest, WalksFromTheEndOfTheVersionLineAsRosbagReadsItAndRefusesOtherVersions) {
+  const std::string path = GoodBag("version_line", rosbag::compression::Uncompressed);
+  std::string bytes = ReadAll(path);
+  bytes.insert(12, " and more");  // "#ROSBAG V2.0 and more\n"
+  const std::size_t record = RecordWithOp(bytes.substr(9), '\x07') + 9;  // the walk from the shifted start
+  const std::uint32_t huge = 2315255808u;
+  std::memcpy(bytes.data() + record, &huge, 4);
+  WriteAll(path, bytes);
+  EXPECT_NE(CheckBagStructure(path).find("record at byte " + std::to_string(record) + ": header length 2315255808"),
+            std::string::npos) << CheckBagStructure(path);
+  WriteAll(path, "#ROSBAG V1.2\nold records");
+  EXPECT_EQ(CheckBagStructure(path), "bag format version 1.2: only 2.0 (every bag since ROS C Turtle, 2010) is read");
+}
+
+TEST(CheckBagStructureTest, RefusesACompressedChunkClaimingMoreThanTheLimit) {
+  const std::string path = GoodBag("big_chunk", rosbag::compression::BZ2);
+  std::string bytes = ReadAll(path);
+  const std::string size_field = std::string("\x09\x00\x00\x00size=", 9);
+  const std::size_t at = bytes.find(size_field);
+  ASSERT_NE(at, std::string::npos);
+  const std::uint32_t huge = 0xF0000000u;
+  std::memcpy(bytes.data() + at + size_field.size(), &huge, 4);
+  WriteAll(path, bytes);
+  const std::string problem = CheckBagStructure(path);
+  EXPECT_NE(problem.find("chunk of 4026531840 bytes uncompressed, more than the limit of 268435456 (kMaxBagChunkBytes)"),
+            std::string::npos) << problem;
+}
+
+}  // namespace
+}  // namespace doorplate_localization
