@@ -51,6 +51,7 @@ ContourSteeringResult ContourSteering::Step(const std::vector<float>& ranges_m, 
   std::vector<Vec2> points;
   points.reserve(ranges_m.size());
   const double reach = o.look_ahead_m + o.wall_distance_m;
+  const double behind_reach = o.wall_distance_m + o.robot_clearance_m;
   ContourSteeringResult result;
   double front_m = o.max_range_m;  // nearest return ahead within the robot's lane
   for (std::size_t i = 0; i < ranges_m.size(); ++i) {
@@ -58,7 +59,11 @@ ContourSteeringResult ContourSteering::Step(const std::vector<float>& ranges_m, 
     if (!std::isfinite(r) || r <= 0.0 || r > o.max_range_m) continue;
     const double a = angle_min_rad + static_cast<double>(i) * angle_increment_rad;
     const Vec2 p{r * std::cos(a), -side_sign_ * r * std::sin(a)};
-    if (p.y < 0 && r <= reach) result.wall_found = true;  // glass returns a beam here and there
+    // The followed wall: a return on its side within reach beside or ahead, or behind within the distance the
+    // robot keeps while it rounds a wall's end. A wall farther behind is one the robot has left (it stood with
+    // its back to it, as at a lift's door): steering for it from the perpendicular circles on the spot.
+    // (Isolated returns count: glass returns a beam here and there.)
+    if (p.y < 0 && r <= (p.x >= 0 ? reach : behind_reach)) result.wall_found = true;
     if (IsIsolatedReturn(ranges_m, i, o.isolated_returns)) continue;  // no obstacle: blocks no target
     points.push_back(p);
     if (p.x > 0 && std::fabs(p.y) <= o.robot_clearance_m) front_m = std::min(front_m, p.x);

@@ -8,6 +8,7 @@
 
 #include "../sim/test_worlds.h"
 #include "doorplate_localization/sim/laser_simulator.h"
+#include "doorplate_localization/sim/simulator.h"
 
 namespace doorplate_localization {
 namespace {
@@ -95,6 +96,53 @@ TEST(ContourSteering, FollowsTheLeftWallAsTheMirrorImage) {
   EXPECT_LT(SteerAt(world, {11.3, 1.4, 0}, options).command.angular_rps, -0.5);  // wall ahead: clockwise
 }
 
+// A 4 m x 4 m lift lobby (x 0..4, y 0..4) off the north wall of a 2 m corridor (y -2..0, x -6..10): the
+// robot stands at a lift door in the lobby's north wall, its back to the door (1.2 m behind, out of reach of
+// a wall beside it), facing the corridor, with no wall on its right within reach.
+World LobbyWorld() {
+  World world;
+  world.walls = {MakeWall("north_w", {-6, 0}, {0, 0}, true),   MakeWall("lobby_w", {0, 0}, {0, 4}, true),
+                 MakeWall("lobby_n", {0, 4}, {4, 4}, true),    MakeWall("lobby_e", {4, 4}, {4, 0}, true),
+                 MakeWall("north_e", {4, 0}, {10, 0}, true),   MakeWall("east", {10, 0}, {10, -2}, true),
+                 MakeWall("courtyard", {10, -2}, {-6, -2}, true), MakeWall("west", {-6, -2}, {-6, 0}, true)};
+  world.start_pose = {3.0, 2.8, -M_PI / 2};
+  BuildSurfaces(world);
+  return world;
+}
+
+TEST(ContourSteering, WithItsBackToAWallAndNoneBesideItDrivesStraightOn) {
+  const ContourSteeringResult r = SteerAt(LobbyWorld(), {3.0, 2.8, -M_PI / 2});
+  EXPECT_FALSE(r.wall_found);
+  EXPECT_NEAR(r.target_bearing_rad, 0.0, 3 * kDeg);
+  EXPECT_NEAR(r.command.angular_rps, 0.0, 0.03);
+}
+
+TEST(ContourSteering, LeavesALobbyFromALiftDoorAndFollowsTheCorridorWall) {
+  // Closed loop (physics 100 Hz, steering 10 Hz). Before the fix the wall behind counted as the followed
+  // wall, and the robot circled on the spot in front of the door for ever.
+  const World world = LobbyWorld();
+  Simulator sim(world, SimulatorOptions{});
+  const ContourSteering steering({});
+  double min_y = world.start_pose.y_m;
+  double east_along_courtyard_m = -1e9;  // the farthest x reached 0.6 ± 0.15 m from the courtyard wall
+  for (int step = 0; sim.time_s() < 60.0; ++step) {
+    if (step % 10 == 0) {
+      const SimulatedScan scan = sim.Scan();
+      const VelocityCommand cmd = steering.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad).command;
+      sim.SetCommand(cmd.linear_mps, cmd.angular_rps);
+    }
+    sim.Step();
+    min_y = std::min(min_y, sim.true_pose().y_m);
+    if (std::fabs(sim.true_pose().y_m - (-2.0 + 0.6)) < 0.15) {
+      east_along_courtyard_m = std::max(east_along_courtyard_m, sim.true_pose().x_m);
+    }
+    ASSERT_FALSE(sim.bumped()) << "at " << sim.time_s() << " s";
+  }
+  EXPECT_LT(min_y, -0.5) << "never left the lobby (y > 0) for the corridor";
+  // Then along the courtyard wall (on its right) eastwards, 0.6 m from it, to beyond the lobby.
+  EXPECT_GT(east_along_courtyard_m, 7.0);
+}
+
 TEST(ContourSteering, BoxedInTurnsOnTheSpot) {
   const ContourSteeringResult r = SteerAt(test::RectangleCorridor(1.2, 1.2), {0.6, 0.6, 0});
   EXPECT_FALSE(r.target_found);
@@ -126,3 +174,4 @@ TEST(ContourSteering, RejectsInvalidOptionsNamingTheField) {
 
 }  // namespace
 }  // namespace doorplate_localization
+

@@ -13,7 +13,9 @@
 // without a separate controller. A gap in the wall narrower than 2·wall_distance_m (a door) lets no such
 // path through; a side corridor does. With no return within look_ahead_m + wall_distance_m on the followed
 // side (open space, or a pass starting mid-corridor) the search starts straight ahead instead, so the
-// robot drives on until it meets a wall rather than circling.
+// robot drives on until it meets a wall rather than circling. Behind the robot (x < 0) a return counts as
+// the followed wall only within wall_distance_m + robot_clearance_m (the end of a wall it is rounding): a
+// robot with its back to a wall and none beside it (at a lift door) drives away instead of circling.
 //
 // The radius shrinks towards a wall ahead (down to min_look_ahead_m), so the robot drives on to within
 // wall_distance_m + min_look_ahead_m of a dead end's wall before it turns and its camera passes the
@@ -52,6 +54,7 @@ struct ContourSteeringResult {
   double target_bearing_rad = 0.0;     // θ of the chosen target, base_link
   double look_ahead_m = 0.0;           // the radius used this step
   bool wall_found = false;             // a return on the followed side lies within look_ahead_m + wall_distance_m
+                                       // (behind the robot: within wall_distance_m + robot_clearance_m)
   VelocityCommand command;
 };
 
