@@ -196,6 +196,7 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
   if (const std::optional<SlamBackEndResult>& back_end = session.BackEndResult()) {
     result.odometry_scale = back_end->odometry_scale;
     result.loop_closures = back_end->loop_closures;
+    result.loop_closures_dropped = back_end->loop_closures_dropped;
   }
   // The estimate at the last processed scan (back end, or best particle) vs the truth now: the odometry
   // since then added.

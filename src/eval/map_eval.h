@@ -81,7 +81,8 @@ struct MapEvalResult {
   double trajectory_rmse_m = 0.0;    // position error of `trajectory` against the truth, per processed scan
   double trajectory_max_error_m = 0.0;
   double odometry_scale = 1.0;       // back end's estimate of true ÷ odometry distance (1 if off)
-  int loop_closures = 0;             // back end's scan-alignment loop closures
+  int loop_closures = 0;             // back end's scan-alignment loop closures (in the final graph)
+  int loop_closures_dropped = 0;     // ... dropped by its consistency check
   OccupancyGrid grid;
   TextMap text_map;                  // empty landmarks for method rbpf
   std::vector<Pose2D> trajectory;    // TextSlam::Trajectory(): back end poses (else best particle's), map frame

@@ -23,6 +23,11 @@ const SlamBackEndOptions& Validated(const SlamBackEndOptions& o) {
   if (o.loop_closures_per_node < 1) fail("loop_closures_per_node: must be >= 1");
   if (!(o.sequential_gate_sigmas >= 0)) fail("sequential_gate_sigmas: must be >= 0 (0: off)");
   if (o.front_end_pinned_neighbours < 0) fail("front_end_pinned_neighbours: must be >= 0");
+  if (!(o.loop_closure_max_residual_sigmas >= 0)) fail("loop_closure_max_residual_sigmas: must be >= 0 (0: off)");
+  if (o.loop_closure_check_rounds < 0) fail("loop_closure_check_rounds: must be >= 0");
+  if (o.loop_closure_proposal_order < 0 || o.loop_closure_proposal_order > 2) {
+    fail("loop_closure_proposal_order: must be 0 (auto), 1 (front end first) or 2 (first solve first)");
+  }
   if (!(o.icp.min_inlier_fraction > 0 && o.icp.min_inlier_fraction <= 1)) fail("icp.min_inlier_fraction: must be in (0, 1]");
   for (double v : {o.odometry_trans_m2_per_m, o.odometry_trans_m2_per_rad, o.odometry_rot_rad2_per_m,
                    o.odometry_rot_rad2_per_rad}) {
@@ -130,6 +135,48 @@ std::optional<PoseEdge> SlamBackEnd::Align(int from, int to, const Pose2D& initi
   return edge;
 }
 
+PoseGraph SlamBackEnd::BaseGraph(std::map<int, int>* landmark_of_plate) const {
+  PoseGraph graph;
+  for (const Node& node : nodes_) graph.AddNode(node.front_end);
+  for (int j = 1; j < num_nodes(); ++j) graph.AddEdge(OdometryEdge(j - 1, j));
+  for (const PoseEdge& edge : sequential_edges_) graph.AddEdge(edge);
+  landmark_of_plate->clear();
+  for (const PlateReading& reading : plates_) {
+    auto it = landmark_of_plate->find(reading.plate_id);
+    if (it == landmark_of_plate->end()) {
+      const int landmark = graph.AddLandmark(nodes_[reading.node].front_end.TransformPoint(reading.in_node_frame));
+      it = landmark_of_plate->emplace(reading.plate_id, landmark).first;
+    }
+    LandmarkEdge edge;
+    edge.node = reading.node;
+    edge.landmark = it->second;
+    edge.measurement = reading.in_node_frame;
+    edge.information = Eigen::Matrix2d::Identity() / (options_.plate_sigma_m * options_.plate_sigma_m);
+    graph.AddEdge(edge);
+  }
+  return graph;
+}
+
+double SlamBackEnd::SquaredResidual(const PoseGraph& graph, const PoseEdge& edge) {
+  const Pose2D solved = graph.node(edge.from).Between(graph.node(edge.to));
+  const Eigen::Vector3d e(solved.x_m - edge.measurement.x_m, solved.y_m - edge.measurement.y_m,
+                          NormalizeAngle(solved.theta_rad - edge.measurement.theta_rad));
+  return e.dot(edge.information * e);
+}
+
+bool SlamBackEnd::PlatesCloseALoop() const {
+  std::map<int, std::pair<int, int>> first_last;  // plate id -> (first, last) node that read it
+  for (const PlateReading& reading : plates_) {
+    auto [it, inserted] = first_last.emplace(reading.plate_id, std::make_pair(reading.node, reading.node));
+    if (!inserted) {
+      it->second.first = std::min(it->second.first, reading.node);
+      it->second.second = std::max(it->second.second, reading.node);
+    }
+    if (it->second.second - it->second.first >= options_.loop_closure_min_separation) return true;
+  }
+  return false;
+}
+
 SlamBackEndResult SlamBackEnd::Optimize() const {
   SlamBackEndResult result;
   const int n = num_nodes();
@@ -145,24 +192,8 @@ SlamBackEndResult SlamBackEnd::Optimize() const {
   }
   sequential_done_ = n;
 
-  PoseGraph graph;
-  for (const Node& node : nodes_) graph.AddNode(node.front_end);
-  for (int j = 1; j < n; ++j) graph.AddEdge(OdometryEdge(j - 1, j));
-  for (const PoseEdge& edge : sequential_edges_) graph.AddEdge(edge);
   std::map<int, int> landmark_of_plate;
-  for (const PlateReading& reading : plates_) {
-    auto it = landmark_of_plate.find(reading.plate_id);
-    if (it == landmark_of_plate.end()) {
-      const int landmark = graph.AddLandmark(nodes_[reading.node].front_end.TransformPoint(reading.in_node_frame));
-      it = landmark_of_plate.emplace(reading.plate_id, landmark).first;
-    }
-    LandmarkEdge edge;
-    edge.node = reading.node;
-    edge.landmark = it->second;
-    edge.measurement = reading.in_node_frame;
-    edge.information = Eigen::Matrix2d::Identity() / (options_.plate_sigma_m * options_.plate_sigma_m);
-    graph.AddEdge(edge);
-  }
+  PoseGraph graph = BaseGraph(&landmark_of_plate);
   result.alignment_edges = static_cast<int>(sequential_edges_.size());
   result.plate_readings = static_cast<int>(plates_.size());
   // Loop closures, aligned afresh at every solve (an alignment made in an earlier solve started from a rougher
@@ -182,11 +213,17 @@ SlamBackEndResult SlamBackEnd::Optimize() const {
     }
     trusted[i] = all;
   }
-  std::set<std::pair<int, int>> closed;
+  std::set<std::pair<int, int>> closed;  // pairs tried (kept, refused by ICP or dropped by the check)
+  std::vector<PoseEdge> loops;           // in the graph
+  std::vector<bool> has_closure(n, false);  // node j took a closure with an earlier node
+  const bool front_end_first = options_.loop_closure_proposal_order == 1 ||
+                               (options_.loop_closure_proposal_order == 0 && !PlatesCloseALoop());
+  // only_pinned: front-end proposals (trusted nodes only, and only for nodes without a closure yet).
   const auto close_loops = [&](const auto& pose_of, bool only_pinned) {
     int added = 0;
     const std::vector<std::vector<int>> candidates = LoopClosureCandidates(n, pose_of);
     for (int j = 0; j < n; ++j) {
+      if (only_pinned && !front_end_first && has_closure[j]) continue;
       int closed_here = 0;
       for (int i : candidates[j]) {
         if (closed_here >= options_.loop_closures_per_node) break;
@@ -194,21 +231,64 @@ SlamBackEndResult SlamBackEnd::Optimize() const {
         if (!closed.insert({i, j}).second) continue;
         if (const std::optional<PoseEdge> edge = Align(i, j, pose_of(i).Between(pose_of(j)), true)) {
           graph.AddEdge(*edge);
+          loops.push_back(*edge);
+          has_closure[j] = true;
           ++added, ++closed_here;
         }
       }
     }
-    result.loop_closures += added;
     return added;
   };
-  close_loops([&](int i) -> const Pose2D& { return nodes_[i].front_end; }, true);
-  result.summary = graph.Optimize(options_.graph);
-  const std::vector<Pose2D> solved = [&] {
+  // Consistency check (after a solve): a loop closure the solution misses by more than
+  // loop_closure_max_residual_sigmas (Mahalanobis, the alignment's own information) is a false match of
+  // look-alike places (two corners, two door recesses) that the rest of the graph (odometry, the plates,
+  // the other closures) contradicts. The Huber kernel only bounds each one's pull; a few dozen of them still
+  // bend a floor. Dropped, and the graph is rebuilt and solved again, up to loop_closure_check_rounds times.
+  const double gate = options_.loop_closure_max_residual_sigmas * options_.loop_closure_max_residual_sigmas;
+  const auto check_loops = [&] {
+    for (int round = 0; round < options_.loop_closure_check_rounds && gate > 0; ++round) {
+      std::vector<PoseEdge> kept;
+      for (const PoseEdge& edge : loops) {
+        if (SquaredResidual(graph, edge) <= gate) kept.push_back(edge);
+      }
+      if (kept.size() == loops.size()) return;
+      result.loop_closures_dropped += static_cast<int>(loops.size() - kept.size());
+      loops = std::move(kept);
+      graph = BaseGraph(&landmark_of_plate);
+      for (const PoseEdge& edge : loops) graph.AddEdge(edge);
+      result.summary = graph.Optimize(options_.graph);
+    }
+  };
+  const auto solved_poses = [&] {
     std::vector<Pose2D> poses;
     for (int i = 0; i < n; ++i) poses.push_back(graph.node(i));
     return poses;
-  }();
-  if (close_loops([&](int i) -> const Pose2D& { return solved[i]; }, false) > 0) result.summary = graph.Optimize(options_.graph);
+  };
+  const auto close_at_solved = [&] {
+    const std::vector<Pose2D> solved = solved_poses();
+    if (close_loops([&](int i) -> const Pose2D& { return solved[i]; }, false) > 0) {
+      result.summary = graph.Optimize(options_.graph);
+      check_loops();
+    }
+  };
+  const auto close_at_front_end = [&] {
+    if (close_loops([&](int i) -> const Pose2D& { return nodes_[i].front_end; }, true) > 0) {
+      result.summary = graph.Optimize(options_.graph);
+      check_loops();
+    }
+  };
+  if (front_end_first) {
+    close_loops([&](int i) -> const Pose2D& { return nodes_[i].front_end; }, true);
+    result.summary = graph.Optimize(options_.graph);
+    check_loops();
+    close_at_solved();
+  } else {
+    result.summary = graph.Optimize(options_.graph);
+    close_at_solved();
+    close_at_front_end();
+    close_at_solved();
+  }
+  result.loop_closures = static_cast<int>(loops.size());
 
   for (int i = 0; i < n; ++i) result.poses.push_back(graph.node(i));
   for (const auto& [plate_id, landmark] : landmark_of_plate) {

@@ -179,8 +179,9 @@ int Run(const Args& args) {
                 graph.theta_rad * 180.0 / M_PI);
     if (args.has_expected) std::printf(", |log| to the expected pose %.3f", LogNorm(args.expected, graph));
     const dl::SlamBackEndResult& r = *session.BackEndResult();
-    std::printf(" (%d nodes, %d alignments, %d loop closures, odometry scale %.4f)\n", static_cast<int>(r.poses.size()),
-                r.alignment_edges, r.loop_closures, r.odometry_scale);
+    std::printf(" (%d nodes, %d alignments, %d loop closures (%d dropped as inconsistent), odometry scale %.4f)\n",
+                static_cast<int>(r.poses.size()), r.alignment_edges, r.loop_closures, r.loop_closures_dropped,
+                r.odometry_scale);
   }
   std::printf("odometry alone at the end of the log: %.4f %.4f %.2f deg\n", odometry.x_m, odometry.y_m,
               odometry.theta_rad * 180.0 / M_PI);

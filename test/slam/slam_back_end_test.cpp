@@ -168,6 +168,42 @@ TEST(SlamBackEnd, TheFrontEndsPosesProposeTheLoopClosuresTheOdometryLost) {
   EXPECT_EQ(stretches.loop_closures, 1);
 }
 
+// Two look-alike rooms 10 m apart (test::Room and a copy shifted along x): 30 nodes drive from the first
+// room's centre to the second's with exact odometry; only the first and the last have a scan, and they are
+// the same scan. The front end confused the rooms: it put the last node back at the first (pinned), so its
+// poses propose a loop closure that ICP confirms (identical scans) and the odometry contradicts.
+SlamBackEndResult RunIntoALookAlikeRoom(double max_residual_sigmas) {
+  SlamBackEndOptions options;
+  options.loop_closure_max_residual_sigmas = max_residual_sigmas;
+  // With no scans in between, a free odometry scale would shrink the 10 m to nothing (nothing else
+  // measures distance here) and so agree with the closure.
+  options.graph.estimate_odometry_scale = false;
+  SlamBackEnd back_end(options);
+  std::vector<Segment> second = test::Room();
+  for (Segment& wall : second) wall = {{wall.a.x + 10, wall.a.y}, {wall.b.x + 10, wall.b.y}};
+  constexpr int kNodes = 30;
+  for (int i = 0; i < kNodes; ++i) {
+    const Pose2D truth{10.0 * i / (kNodes - 1), 0, 0};
+    const bool last = i == kNodes - 1;
+    const std::vector<Vec2> points = i == 0 ? PointsAt(test::Room(), truth) : last ? PointsAt(second, truth)
+                                                                                   : std::vector<Vec2>{};
+    back_end.AddNode(points, truth, last ? Pose2D{0, 0, 0} : truth);
+  }
+  return back_end.Optimize();
+}
+
+TEST(SlamBackEnd, ALoopClosureTheRestOfTheGraphContradictsIsDroppedAsAFalseMatch) {
+  const SlamBackEndResult checked = RunIntoALookAlikeRoom(9.0);
+  EXPECT_EQ(checked.loop_closures, 0);
+  EXPECT_EQ(checked.loop_closures_dropped, 1);
+  EXPECT_NEAR(checked.poses.back().x_m, 10.0, 0.05);
+  // Unchecked, the closure's Huber kernel bounds its pull but does not remove it: the odometry's 10 m bend.
+  const SlamBackEndResult unchecked = RunIntoALookAlikeRoom(0.0);
+  EXPECT_EQ(unchecked.loop_closures, 1);
+  EXPECT_EQ(unchecked.loop_closures_dropped, 0);
+  EXPECT_LT(unchecked.poses.back().x_m, 9.5);
+}
+
 TEST(SlamBackEnd, APlateReadingAtANodeThatDoesNotExistThrows) {
   SlamBackEnd back_end{SlamBackEndOptions{}};
   EXPECT_THROW(back_end.AddPlateReading(0, 0, {1, 1}), std::invalid_argument);  // no node yet
@@ -216,6 +252,15 @@ TEST(SlamBackEnd, BadOptionsThrowNamingTheField) {
   o = {};
   o.front_end_pinned_neighbours = -1;
   ExpectThrowNaming(o, "SlamBackEndOptions.front_end_pinned_neighbours");
+  o = {};
+  o.loop_closure_max_residual_sigmas = -1;
+  ExpectThrowNaming(o, "SlamBackEndOptions.loop_closure_max_residual_sigmas");
+  o = {};
+  o.loop_closure_check_rounds = -1;
+  ExpectThrowNaming(o, "SlamBackEndOptions.loop_closure_check_rounds");
+  o = {};
+  o.loop_closure_proposal_order = 3;
+  ExpectThrowNaming(o, "SlamBackEndOptions.loop_closure_proposal_order");
   o = {};
   o.icp.degenerate_min_fraction = 1.0;
   ExpectThrowNaming(o, "SlamBackEndOptions.icp.degenerate_min_fraction");

@@ -9,9 +9,11 @@
 //  - scan alignment (point-to-line ICP, scan_icp.h) from each node to the nodes 1, 2, 4, ... back, within
 //    `max_sequential_offset`: their information says what the laser fixes (nothing along a featureless
 //    corridor, everything near an end wall), so odometry fills in exactly where the laser cannot;
-//  - loop closures: after a first solve, each node is aligned with the nearest node at least
-//    `loop_closure_min_separation` nodes away within `loop_closure_radius_m` (Huber kernel), afresh at
-//    every solve (only the sequential alignments are kept between solves);
+//  - loop closures: each node is aligned with the nearest node of earlier visits at least
+//    `loop_closure_min_separation` nodes away within `loop_closure_radius_m` (Huber kernel), proposed
+//    where the front end's poses and where a solve put them (in the order loop_closure_proposal_order
+//    says), afresh at every solve (only the sequential alignments are kept between solves); after each solve, closures the solution misses by
+//    more than `loop_closure_max_residual_sigmas` are dropped as false matches and the graph is solved again;
 //  - doorplates: each reading is the plate's position in its node's frame (bearing and range, σ
 //    `plate_sigma_m`); a plate read twice is a loop closure, and the odometry edges between the nodes
 //    where adjacent plates were read are the paper's inter-plate distances (eq. 13; eq. 14's sum is
@@ -20,6 +22,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -45,6 +48,18 @@ struct SlamBackEndOptions {
   // The front end's poses propose loop closures only between nodes that were pinned (AddNode) together with
   // this many neighbours on each side in sequence.
   int front_end_pinned_neighbours = 1;
+  // After each solve, loop closures whose residual (Mahalanobis, by the alignment's information) exceeds
+  // this many sigmas are dropped as false matches and the graph is solved again without them, up to
+  // loop_closure_check_rounds times per solve. 0: off.
+  double loop_closure_max_residual_sigmas = 9.0;
+  int loop_closure_check_rounds = 3;
+  // Who proposes loop closures first. 1: the front end's poses, before the first solve; then that solve's.
+  // 2: a first solve without closures, then the front end's poses for the nodes that found none, then the
+  // solution's again. 0 (auto): 2 when a plate was read from two nodes at least loop_closure_min_separation
+  // apart (the plates close loops no look-alike place can fake, so the first solve is the better proposer;
+  // a bent front end proposes false closures), else 1 (laser only: that solve has drifted, and the front
+  // end's map is the better proposer).
+  int loop_closure_proposal_order = 0;
   // A sequential alignment further from its odometry guess than this many odometry sigmas (the noise
   // below plus the scale prior's, in translation or in heading) is dropped as a false match. 0: off.
   double sequential_gate_sigmas = 5.0;
@@ -66,7 +81,8 @@ struct SlamBackEndResult {
   std::vector<std::optional<Vec2>> plates;  // per plate id, map frame (unset: never read)
   double odometry_scale = 1.0;              // estimated true distance ÷ odometry distance
   int alignment_edges = 0;
-  int loop_closures = 0;
+  int loop_closures = 0;                    // in the final graph
+  int loop_closures_dropped = 0;            // by the consistency check (loop_closure_max_residual_sigmas)
   int plate_readings = 0;
   PoseGraphSummary summary;                 // of the final solve
 };
@@ -113,6 +129,13 @@ class SlamBackEnd {
   // Translation and heading variance of an odometry step (the noise options above, without the scale).
   std::pair<double, double> OdometryVariances(const Pose2D& step) const;
   PoseEdge OdometryEdge(int from, int to) const;
+  // The graph without loop closures: nodes at the front end's poses, odometry, sequential alignments and
+  // plates (landmark index per plate id into `landmark_of_plate`).
+  PoseGraph BaseGraph(std::map<int, int>* landmark_of_plate) const;
+  // Whether some plate was read from two nodes at least loop_closure_min_separation apart in sequence.
+  bool PlatesCloseALoop() const;
+  // eᵀ Ω e of `edge` at the graph's current estimate.
+  static double SquaredResidual(const PoseGraph& graph, const PoseEdge& edge);
   // Whether an alignment's result lies within sequential_gate_sigmas of the odometry's relative pose.
   bool AgreesWithOdometry(const Pose2D& odometry, const Pose2D& aligned) const;
   std::optional<PoseEdge> Align(int from, int to, const Pose2D& initial, bool loop_closure) const;
