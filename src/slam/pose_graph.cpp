@@ -96,11 +96,15 @@ void PoseGraph::AddEdge(const LandmarkEdge& edge) {
   landmark_edges_.push_back(edge);
 }
 
+double PoseGraph::SquaredResidual(const PoseEdge& edge) const {
+  const PoseResidual r = Evaluate(edge, nodes_.at(edge.from), nodes_.at(edge.to), scale_);
+  return r.e.dot(edge.information * r.e);
+}
+
 double PoseGraph::Cost(const PoseGraphOptions& options) const {
   double cost = 0.0;
   for (const PoseEdge& edge : pose_edges_) {
-    const PoseResidual r = Evaluate(edge, nodes_[edge.from], nodes_[edge.to], scale_);
-    const double m2 = r.e.dot(edge.information * r.e);
+    const double m2 = SquaredResidual(edge);
     cost += edge.robust ? HuberCost(std::sqrt(std::max(0.0, m2)), options.huber_sigmas) : 0.5 * m2;
   }
   for (const LandmarkEdge& edge : landmark_edges_) {

@@ -157,13 +157,6 @@ PoseGraph SlamBackEnd::BaseGraph(std::map<int, int>* landmark_of_plate) const {
   return graph;
 }
 
-double SlamBackEnd::SquaredResidual(const PoseGraph& graph, const PoseEdge& edge) {
-  const Pose2D solved = graph.node(edge.from).Between(graph.node(edge.to));
-  const Eigen::Vector3d e(solved.x_m - edge.measurement.x_m, solved.y_m - edge.measurement.y_m,
-                          NormalizeAngle(solved.theta_rad - edge.measurement.theta_rad));
-  return e.dot(edge.information * e);
-}
-
 bool SlamBackEnd::PlatesCloseALoop() const {
   std::map<int, std::pair<int, int>> first_last;  // plate id -> (first, last) node that read it
   for (const PlateReading& reading : plates_) {
@@ -249,7 +242,7 @@ SlamBackEndResult SlamBackEnd::Optimize() const {
     for (int round = 0; round < options_.loop_closure_check_rounds && gate > 0; ++round) {
       std::vector<PoseEdge> kept;
       for (const PoseEdge& edge : loops) {
-        if (SquaredResidual(graph, edge) <= gate) kept.push_back(edge);
+        if (graph.SquaredResidual(edge) <= gate) kept.push_back(edge);
       }
       if (kept.size() == loops.size()) return;
       result.loop_closures_dropped += static_cast<int>(loops.size() - kept.size());
@@ -259,28 +252,23 @@ SlamBackEndResult SlamBackEnd::Optimize() const {
       result.summary = graph.Optimize(options_.graph);
     }
   };
-  const auto solved_poses = [&] {
-    std::vector<Pose2D> poses;
-    for (int i = 0; i < n; ++i) poses.push_back(graph.node(i));
-    return poses;
-  };
-  const auto close_at_solved = [&] {
-    const std::vector<Pose2D> solved = solved_poses();
-    if (close_loops([&](int i) -> const Pose2D& { return solved[i]; }, false) > 0) {
-      result.summary = graph.Optimize(options_.graph);
-      check_loops();
-    }
-  };
-  const auto close_at_front_end = [&] {
-    if (close_loops([&](int i) -> const Pose2D& { return nodes_[i].front_end; }, true) > 0) {
-      result.summary = graph.Optimize(options_.graph);
-      check_loops();
-    }
-  };
-  if (front_end_first) {
-    close_loops([&](int i) -> const Pose2D& { return nodes_[i].front_end; }, true);
+  // Each closes loops where its poses say, then (if it added any) solves and checks; true if it added any.
+  const auto close_and_solve = [&](const auto& pose_of, bool only_pinned) {
+    if (close_loops(pose_of, only_pinned) == 0) return false;
     result.summary = graph.Optimize(options_.graph);
     check_loops();
+    return true;
+  };
+  const auto close_at_solved = [&] {
+    std::vector<Pose2D> solved;
+    for (int i = 0; i < n; ++i) solved.push_back(graph.node(i));
+    return close_and_solve([&](int i) -> const Pose2D& { return solved[i]; }, false);
+  };
+  const auto close_at_front_end = [&] {
+    return close_and_solve([&](int i) -> const Pose2D& { return nodes_[i].front_end; }, true);
+  };
+  if (front_end_first) {
+    if (!close_at_front_end()) result.summary = graph.Optimize(options_.graph);
     close_at_solved();
   } else {
     result.summary = graph.Optimize(options_.graph);

@@ -182,6 +182,22 @@ TEST(PoseGraph, ARobustWrongLoopClosureMovesTheSolutionLessThanANonRobustOne) {
   EXPECT_LT(robust, 1.2 * solve(true, 1.0));
 }
 
+TEST(PoseGraph, SquaredResidualIsTheEdgesMahalanobisErrorInTheFromNodesFrame) {
+  PoseGraph graph;
+  graph.AddNode({1, 1, M_PI / 2});
+  graph.AddNode({1, 3, M_PI / 2});  // 2 m ahead of node 0, in its frame
+  PoseEdge edge;
+  edge.from = 0;
+  edge.to = 1;
+  edge.measurement = {1.5, 0.1, 0.05};  // errors 0.5 m ahead, 0.1 m sideways, 0.05 rad
+  edge.information = Eigen::Vector3d(4.0, 100.0, 400.0).asDiagonal();
+  EXPECT_NEAR(graph.SquaredResidual(edge), 4.0 * 0.25 + 100.0 * 0.01 + 400.0 * 0.0025, 1e-9);
+  edge.measurement = {2.0, 0.0, 0.0};
+  EXPECT_NEAR(graph.SquaredResidual(edge), 0.0, 1e-12);
+  edge.to = 2;
+  EXPECT_THROW(graph.SquaredResidual(edge), std::out_of_range);
+}
+
 TEST(PoseGraph, InvalidIndicesAndNonFiniteValuesThrow) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();

@@ -65,6 +65,9 @@ class PoseGraph {
   void AddEdge(const LandmarkEdge& edge);
 
   PoseGraphSummary Optimize(const PoseGraphOptions& options);
+  // eᵀ Ω e of `edge` at the current estimate (odometry edges with the current odometry scale); the edge
+  // need not be in the graph, its node indices must be (std::out_of_range otherwise).
+  double SquaredResidual(const PoseEdge& edge) const;
 
   int num_nodes() const { return static_cast<int>(nodes_.size()); }
   int num_landmarks() const { return static_cast<int>(landmarks_.size()); }

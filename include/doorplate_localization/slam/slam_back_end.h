@@ -12,8 +12,9 @@
 //  - loop closures: each node is aligned with the nearest node of earlier visits at least
 //    `loop_closure_min_separation` nodes away within `loop_closure_radius_m` (Huber kernel), proposed
 //    where the front end's poses and where a solve put them (in the order loop_closure_proposal_order
-//    says), afresh at every solve (only the sequential alignments are kept between solves); after each solve, closures the solution misses by
-//    more than `loop_closure_max_residual_sigmas` are dropped as false matches and the graph is solved again;
+//    says), afresh at every solve (only the sequential alignments are kept between solves); after each
+//    solve, closures the solution misses by more than `loop_closure_max_residual_sigmas` are dropped as
+//    false matches and the graph is solved again;
 //  - doorplates: each reading is the plate's position in its node's frame (bearing and range, σ
 //    `plate_sigma_m`); a plate read twice is a loop closure, and the odometry edges between the nodes
 //    where adjacent plates were read are the paper's inter-plate distances (eq. 13; eq. 14's sum is
@@ -134,8 +135,6 @@ class SlamBackEnd {
   PoseGraph BaseGraph(std::map<int, int>* landmark_of_plate) const;
   // Whether some plate was read from two nodes at least loop_closure_min_separation apart in sequence.
   bool PlatesCloseALoop() const;
-  // eᵀ Ω e of `edge` at the graph's current estimate.
-  static double SquaredResidual(const PoseGraph& graph, const PoseEdge& edge);
   // Whether an alignment's result lies within sequential_gate_sigmas of the odometry's relative pose.
   bool AgreesWithOdometry(const Pose2D& odometry, const Pose2D& aligned) const;
   std::optional<PoseEdge> Align(int from, int to, const Pose2D& initial, bool loop_closure) const;
