@@ -24,6 +24,10 @@ const CorridorSweepOptions& Validated(const CorridorSweepOptions& o) {
   Require(o.approach_tolerance_m > 0, "approach_tolerance_m", "must be > 0");
   Require(o.wall_gate_m > 0, "wall_gate_m", "must be > 0");
   Require(o.min_wall_span_m >= 0, "min_wall_span_m", "must be >= 0");
+  Require(o.max_wall_turn_rad >= 0 && o.max_wall_turn_rad < M_PI / 2, "max_wall_turn_rad", "must be in [0, pi/2)");
+  Require(o.wall_direction_gain > 0 && o.wall_direction_gain <= 1, "wall_direction_gain", "must be in (0, 1]");
+  Require(o.wall_gate_reset_s > 0 && std::isfinite(o.wall_gate_reset_s), "wall_gate_reset_s", "must be finite and > 0");
+  Require(o.end_confirm_s >= 0 && std::isfinite(o.end_confirm_s), "end_confirm_s", "must be finite and >= 0");
   return o;
 }
 
@@ -59,10 +63,14 @@ void CorridorSweep::Reset() {
   approaching_ = true;
   has_wall_ = false;
   turned_rad_ = 0.0;
+  blocked_since_s_.reset();
+  wall_direction_odom_rad_.reset();
+  gate_dropped_ = false;
 }
 
 VelocityCommand CorridorSweep::Step(const std::vector<float>& ranges_m, double angle_min_rad,
-                                    double angle_increment_rad, const Pose2D& odom_pose) {
+                                    double angle_increment_rad, const Pose2D& odom_pose, double time_s) {
+  if (!std::isfinite(time_s)) throw std::invalid_argument("CorridorSweep::Step: time_s must be finite");
   if (phase_ == SweepPhase::kDone) return {};
   const CorridorObservation approach = approach_observer_.Observe(ranges_m, angle_min_rad, angle_increment_rad);
   if (phase_ == SweepPhase::kTurnAround) {
@@ -75,13 +83,37 @@ VelocityCommand CorridorSweep::Step(const std::vector<float>& ranges_m, double a
     approaching_ = false;
   }
   last_observation_ = approaching_ ? approach : ObserveGated(ranges_m, angle_min_rad, angle_increment_rad);
+  if (!approaching_ && gate_dropped_ && last_observation_.wall_found &&
+      last_observation_.wall_distance_m > options_.follower.wall_distance_m + options_.wall_gate_m) {
+    last_observation_.wall_found = false;
+  }
+  if (!approaching_ && last_observation_.wall_found) CheckWallDirection(odom_pose, &last_observation_);
   if (!approaching_ && last_observation_.wall_found) {
     wall_ = last_observation_;
     has_wall_ = true;
+    gate_dropped_ = false;
+    last_wall_s_ = time_s;
+  } else if (!approaching_ && has_wall_ && time_s - last_wall_s_ > options_.wall_gate_reset_s) {
+    has_wall_ = false;  // the next fit ungated
+    gate_dropped_ = true;
+  }
+  CorridorObservation steer = last_observation_;
+  if (!approaching_ && !steer.wall_found && wall_direction_odom_rad_) {
+    // No wall this step (a door, the glass, a rejected fit): hold the leg's wall direction, not whatever
+    // heading the robot has, so that a gap does not let it drift into the opposite wall.
+    steer.wall_found = true;
+    steer.wall_distance_m = options_.follower.wall_distance_m;
+    steer.wall_angle_rad = NormalizeAngle(*wall_direction_odom_rad_ - odom_pose.theta_rad);
   }
   WallFollowState state;
-  const VelocityCommand command = follower_.Command(last_observation_, &state);
-  if (state != WallFollowState::kEndReached) return command;
+  const VelocityCommand command = follower_.Command(steer, &state);
+  if (state != WallFollowState::kEndReached) {
+    blocked_since_s_.reset();
+    return command;
+  }
+  if (!blocked_since_s_) blocked_since_s_ = time_s;
+  if (time_s - *blocked_since_s_ < options_.end_confirm_s) return command;  // a stop: wait for it to clear
+  blocked_since_s_.reset();
   if (phase_ == SweepPhase::kFollowBack) {
     phase_ = SweepPhase::kDone;
     return {};
@@ -89,6 +121,8 @@ VelocityCommand CorridorSweep::Step(const std::vector<float>& ranges_m, double a
   phase_ = SweepPhase::kTurnAround;
   approaching_ = true;  // the way back starts at the far wall's distance
   has_wall_ = false;
+  wall_direction_odom_rad_.reset();
+  gate_dropped_ = false;
   turned_rad_ = 0.0;
   last_yaw_rad_ = odom_pose.theta_rad;
   last_observation_ = approach;
@@ -128,6 +162,21 @@ CorridorObservation CorridorSweep::ObserveGated(const std::vector<float>& ranges
   observation.front_distance_m = raw.front_distance_m;  // the end wall and obstacles ahead are never gated
   observation.width_m = raw.width_m;
   return observation;
+}
+
+void CorridorSweep::CheckWallDirection(const Pose2D& odom_pose, CorridorObservation* observation) {
+  if (!(options_.max_wall_turn_rad > 0)) return;
+  const double direction = NormalizeAngle(odom_pose.theta_rad + observation->wall_angle_rad);
+  if (!wall_direction_odom_rad_) {
+    wall_direction_odom_rad_ = direction;
+    return;
+  }
+  const double turn = NormalizeAngle(direction - *wall_direction_odom_rad_);
+  if (std::fabs(turn) > options_.max_wall_turn_rad) {
+    observation->wall_found = false;  // not the wall: Step holds the leg's direction
+    return;
+  }
+  wall_direction_odom_rad_ = NormalizeAngle(*wall_direction_odom_rad_ + options_.wall_direction_gain * turn);
 }
 
 VelocityCommand CorridorSweep::Turn(const CorridorObservation& observation, const Pose2D& odom_pose) {

@@ -144,11 +144,11 @@ class TrialRun {
       return contour_.Step(last_scan_.ranges_m, last_scan_.angle_min_rad, last_scan_.angle_increment_rad).command;
     }
     VelocityCommand cmd = sweep_.Step(last_scan_.ranges_m, last_scan_.angle_min_rad, last_scan_.angle_increment_rad,
-                                      sim_.odom_pose());
+                                      sim_.odom_pose(), sim_.time_s());
     if (sweep_.phase() == SweepPhase::kDone) {
       sweep_.Reset();
       cmd = sweep_.Step(last_scan_.ranges_m, last_scan_.angle_min_rad, last_scan_.angle_increment_rad,
-                        sim_.odom_pose());
+                        sim_.odom_pose(), sim_.time_s());
     }
     return cmd;
   }

@@ -136,7 +136,7 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
         NotePassEnd(explorer, &result);
         if (explorer.phase() == ExplorePhase::kDone) break;
       } else {
-        cmd = sweep.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, sim.odom_pose());
+        cmd = sweep.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, sim.odom_pose(), sim.time_s());
         if (sweep.phase() == SweepPhase::kDone) break;
       }
       sim.SetCommand(cmd.linear_mps, cmd.angular_rps);

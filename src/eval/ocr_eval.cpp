@@ -163,7 +163,8 @@ OcrEvalResult RunOcrEval(const World& world, const OcrEvalOptions& options) {
     for (long long step = 0; sim.time_s() < options.max_pass_time_s; ++step) {
       if (step % std::max(1LL, steps_per_scan) == 0) {
         const SimulatedScan scan = sim.Scan();
-        const VelocityCommand cmd = sweep.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, sim.odom_pose());
+        const VelocityCommand cmd = sweep.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, sim.odom_pose(),
+                                                   sim.time_s());
         if (sweep.phase() == SweepPhase::kDone) break;
         sim.SetCommand(cmd.linear_mps, cmd.angular_rps);
       }

@@ -126,7 +126,8 @@ class WallFollowerNodelet : public nodelet::Nodelet {
                                                           : ExplorePhaseName(explorer_->phase());
     } else if (sweep_) {
       if (sweep_->phase() == SweepPhase::kDone && options_.mode == CorridorDriveMode::kPatrol) sweep_->Reset();
-      cmd = sweep_->Step(scan->ranges, scan->angle_min + yaw_in_base, scan->angle_increment, odom_pose);
+      cmd = sweep_->Step(scan->ranges, scan->angle_min + yaw_in_base, scan->angle_increment, odom_pose,
+                         scan->header.stamp.toSec());
       obs = sweep_->last_observation();
       state = SweepPhaseName(sweep_->phase());
     } else {

@@ -41,6 +41,10 @@ const ParamTable<WallFollowerNodeOptions>& WallFollowerParamTable() {
       Param<O>("turn_speed_rps", DOORPLATE_PARAM_FIELD(sweep.turn_speed_rps),
                "sweep/patrol: in-place turn speed at the corridor's end; explore: the turn between passes",
                r::Positive()),
+      Param<O>("end_confirm_s", DOORPLATE_PARAM_FIELD(sweep.end_confirm_s),
+               "sweep/patrol: something within end_stop_distance_m ends a leg only after the robot has stood "
+               "before it this long (a person in the lane walks on); 0: at once",
+               r::NonNegative()),
       Param<O>("explore/passes", DOORPLATE_PARAM_FIELD(explore.passes),
                "explore: 1 follows one side only (enough for a floor without loops); 2 also the other side of a "
                "ring",

@@ -141,11 +141,13 @@ class Soak {
       route_.push_back(sim_.true_pose().Position());
     }
     scan_ = ToLocalizationScan(sim_.Scan(), sim_.world().sensors.laser);
-    VelocityCommand cmd = sweep_->Step(scan_.ranges_m, scan_.angle_min_rad, scan_.angle_increment_rad, sim_.odom_pose());
+    VelocityCommand cmd = sweep_->Step(scan_.ranges_m, scan_.angle_min_rad, scan_.angle_increment_rad, sim_.odom_pose(),
+                                      sim_.time_s());
     if (sweep_->phase() == SweepPhase::kDone) {  // back and forth: a new sweep as soon as one ends
       ++window_.sweeps_completed;
       sweep_->Reset();
-      cmd = sweep_->Step(scan_.ranges_m, scan_.angle_min_rad, scan_.angle_increment_rad, sim_.odom_pose());
+      cmd = sweep_->Step(scan_.ranges_m, scan_.angle_min_rad, scan_.angle_increment_rad, sim_.odom_pose(),
+                                      sim_.time_s());
     }
     sim_.SetCommand(cmd.linear_mps, cmd.angular_rps);
     if (!session_) return;

@@ -3,10 +3,16 @@
 // the other wall on the way back, so every doorplate of a straight corridor is passed once per sweep.
 // Both legs keep the same robot side to a wall (WallFollowerOptions::wall_side); after the 180° turn that
 // side faces the other physical wall.
-// Input each step: one laser scan in base_link (as WallFollower::Observe) and the odometry pose (base_link
-// in odom; only its yaw is used, to measure the turn). Output: a velocity command for base_link.
+// A leg ends where the wall follower stops before something ahead (WallFollowerOptions::end_stop_distance_m)
+// and it is still there after end_confirm_s of standing still: a person walking through the lane or a few
+// spurious laser returns (docs/results/laser-model.md) clear within a second or two, the corridor's end wall
+// (or the furniture parked at it) does not.
+// Input each step: one laser scan in base_link (as WallFollower::Observe), the odometry pose (base_link in
+// odom; only its yaw is used, to measure the turn) and the scan's time in seconds (any monotonic clock).
+// Output: a velocity command for base_link.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "doorplate_localization/behaviour/wall_follower.h"
@@ -37,6 +43,24 @@ struct CorridorSweepOptions {
   // the followed side leave the robot going straight instead of pulling it in.
   double wall_gate_m = 0.15;
   double min_wall_span_m = 0.6;
+  // Something ahead within follower.end_stop_distance_m ends the leg only once the robot has stood still
+  // before it this long (0: at once). Until then the command is a stop.
+  double end_confirm_s = 4.0;
+  // Wall direction check: a corridor's wall is straight, so during a leg its direction in the odom frame
+  // (odometry yaw + fitted wall angle) stays put. A fit more than max_wall_turn_rad from the leg's wall
+  // direction is not the wall (glass with a room behind it, a bench, a person beside the robot): the wall
+  // counts as not found, and while no wall is found the robot holds the leg's wall direction. The leg's
+  // direction starts at the first fit after the approach and follows accepted fits by wall_direction_gain
+  // per step (odometry's slow yaw drift).
+  // max_wall_turn_rad 0: off.
+  double max_wall_turn_rad = 0.15;
+  double wall_direction_gain = 0.05;
+  // When the gated fit has found no wall for this long, the gate's line is dropped and the next fit is made
+  // from all returns again (the direction check still applies, and the line must lie no farther than
+  // follower.wall_distance_m + wall_gate_m: a far parallel line is an alcove's back or a room seen through
+  // glass): a gate that has locked onto something that was not the wall must not hide the wall for the
+  // rest of the leg.
+  double wall_gate_reset_s = 1.0;
 };
 
 enum class SweepPhase { kFollowOut, kTurnAround, kFollowBack, kDone };
@@ -49,10 +73,11 @@ class CorridorSweep {
   // Throws std::invalid_argument naming the field of an invalid option (follower fields included).
   explicit CorridorSweep(const CorridorSweepOptions& options);
 
-  // One control step. `odom_pose` is base_link in the odom frame at the scan's time. Returns the command
-  // to apply until the next step; a zero command once phase() is kDone.
+  // One control step. `odom_pose` is base_link in the odom frame at the scan's time `time_s` (seconds,
+  // non-decreasing over the steps). Returns the command to apply until the next step; a zero command while
+  // it waits for something ahead to clear and once phase() is kDone.
   VelocityCommand Step(const std::vector<float>& ranges_m, double angle_min_rad, double angle_increment_rad,
-                       const Pose2D& odom_pose);
+                       const Pose2D& odom_pose, double time_s);
 
   SweepPhase phase() const { return phase_; }
   // What the last Step saw of the corridor (for logging and experiments).
@@ -64,6 +89,9 @@ class CorridorSweep {
 
  private:
   VelocityCommand Turn(const CorridorObservation& observation, const Pose2D& odom_pose);
+  // Clears observation->wall_found when the fitted wall has turned more than max_wall_turn_rad from the
+  // leg's wall direction (odom frame); otherwise updates that direction.
+  void CheckWallDirection(const Pose2D& odom_pose, CorridorObservation* observation);
   // The follower's observation with the wall fitted only to returns within wall_gate_m of wall_.
   CorridorObservation ObserveGated(const std::vector<float>& ranges_m, double angle_min_rad,
                                    double angle_increment_rad) const;
@@ -78,6 +106,10 @@ class CorridorSweep {
   CorridorObservation wall_;
   double turned_rad_ = 0.0;       // yaw accumulated during the current turn (unsigned)
   double last_yaw_rad_ = 0.0;     // odometry yaw at the previous turn step
+  std::optional<double> blocked_since_s_;          // stopped before something ahead since then
+  std::optional<double> wall_direction_odom_rad_;  // the leg's wall direction in the odom frame
+  bool gate_dropped_ = false;     // wall_gate_reset_s passed without a wall; cleared by the next fit taken
+  double last_wall_s_ = 0.0;      // time of the last step with the wall found (this leg)
 };
 
 }  // namespace doorplate_localization
