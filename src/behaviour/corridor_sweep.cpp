@@ -27,6 +27,8 @@ const CorridorSweepOptions& Validated(const CorridorSweepOptions& o) {
   Require(o.max_wall_turn_rad >= 0 && o.max_wall_turn_rad < M_PI / 2, "max_wall_turn_rad", "must be in [0, pi/2)");
   Require(o.wall_direction_gain > 0 && o.wall_direction_gain <= 1, "wall_direction_gain", "must be in (0, 1]");
   Require(o.wall_gate_reset_s > 0 && std::isfinite(o.wall_gate_reset_s), "wall_gate_reset_s", "must be finite and > 0");
+  Require(o.wall_reacquire_s > o.wall_gate_reset_s && std::isfinite(o.wall_reacquire_s), "wall_reacquire_s",
+          "must be finite and > wall_gate_reset_s");
   Require(o.end_confirm_s >= 0 && std::isfinite(o.end_confirm_s), "end_confirm_s", "must be finite and >= 0");
   return o;
 }
@@ -81,6 +83,7 @@ VelocityCommand CorridorSweep::Step(const std::vector<float>& ranges_m, double a
   if (approaching_ && approach.wall_found &&
       std::fabs(approach.wall_distance_m - options_.follower.wall_distance_m) <= options_.approach_tolerance_m) {
     approaching_ = false;
+    last_wall_s_ = time_s;
   }
   last_observation_ = approaching_ ? approach : ObserveGated(ranges_m, angle_min_rad, angle_increment_rad);
   if (!approaching_ && gate_dropped_ && last_observation_.wall_found &&
@@ -96,6 +99,11 @@ VelocityCommand CorridorSweep::Step(const std::vector<float>& ranges_m, double a
   } else if (!approaching_ && has_wall_ && time_s - last_wall_s_ > options_.wall_gate_reset_s) {
     has_wall_ = false;  // the next fit ungated
     gate_dropped_ = true;
+  } else if (!approaching_ && time_s - last_wall_s_ > options_.wall_reacquire_s) {
+    // No wall taken for this long: the leg's direction may be wrong. Start over as after the approach.
+    wall_direction_odom_rad_.reset();
+    gate_dropped_ = false;
+    last_wall_s_ = time_s;
   }
   CorridorObservation steer = last_observation_;
   if (!approaching_ && !steer.wall_found && wall_direction_odom_rad_) {
@@ -168,7 +176,9 @@ void CorridorSweep::CheckWallDirection(const Pose2D& odom_pose, CorridorObservat
   if (!(options_.max_wall_turn_rad > 0)) return;
   const double direction = NormalizeAngle(odom_pose.theta_rad + observation->wall_angle_rad);
   if (!wall_direction_odom_rad_) {
-    wall_direction_odom_rad_ = direction;
+    // Taken only once the robot runs parallel to the fit: a fit made while it still turns towards the wall
+    // (after the approach, after a kidnap) can be off by more than the check's tolerance.
+    if (std::fabs(observation->wall_angle_rad) <= options_.parallel_tolerance_rad) wall_direction_odom_rad_ = direction;
     return;
   }
   const double turn = NormalizeAngle(direction - *wall_direction_odom_rad_);

@@ -47,11 +47,11 @@ struct CorridorSweepOptions {
   // before it this long (0: at once). Until then the command is a stop.
   double end_confirm_s = 4.0;
   // Wall direction check: a corridor's wall is straight, so during a leg its direction in the odom frame
-  // (odometry yaw + fitted wall angle) stays put. A fit more than max_wall_turn_rad from the leg's wall
+  // (odometry yaw + fitted wall angle) stays put; it is taken from the first fit the robot runs parallel to
+  // (within parallel_tolerance_rad). A fit more than max_wall_turn_rad from the leg's wall
   // direction is not the wall (glass with a room behind it, a bench, a person beside the robot): the wall
   // counts as not found, and while no wall is found the robot holds the leg's wall direction. The leg's
-  // direction starts at the first fit after the approach and follows accepted fits by wall_direction_gain
-  // per step (odometry's slow yaw drift).
+  // direction follows accepted fits by wall_direction_gain per step (odometry's slow yaw drift).
   // max_wall_turn_rad 0: off.
   double max_wall_turn_rad = 0.15;
   double wall_direction_gain = 0.05;
@@ -61,6 +61,10 @@ struct CorridorSweepOptions {
   // glass): a gate that has locked onto something that was not the wall must not hide the wall for the
   // rest of the leg.
   double wall_gate_reset_s = 1.0;
+  // When no fit has been taken for this long, the leg's wall direction is forgotten and the next fits are
+  // taken unchecked until the robot runs parallel to one (a direction taken wrongly, e.g. while the robot
+  // still turned after a kidnap, must not steer it across the corridor for the rest of the leg).
+  double wall_reacquire_s = 8.0;
 };
 
 enum class SweepPhase { kFollowOut, kTurnAround, kFollowBack, kDone };
