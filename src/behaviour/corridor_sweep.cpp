@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -30,6 +31,9 @@ const CorridorSweepOptions& Validated(const CorridorSweepOptions& o) {
   Require(o.wall_reacquire_s > o.wall_gate_reset_s && std::isfinite(o.wall_reacquire_s), "wall_reacquire_s",
           "must be finite and > wall_gate_reset_s");
   Require(o.end_confirm_s >= 0 && std::isfinite(o.end_confirm_s), "end_confirm_s", "must be finite and >= 0");
+  Require(o.end_min_width_m >= 0 && std::isfinite(o.end_min_width_m), "end_min_width_m", "must be finite and >= 0");
+  Require(o.narrow_end_confirm_s >= o.end_confirm_s && std::isfinite(o.narrow_end_confirm_s), "narrow_end_confirm_s",
+          "must be finite and >= end_confirm_s");
   return o;
 }
 
@@ -40,7 +44,54 @@ WallFollowerOptions ApproachOptions(const CorridorSweepOptions& o) {
   return approach;
 }
 
+constexpr double kBlockingGapM = 0.15;  // returns closer than this to the next belong to one thing
+constexpr int kBlockingMaxMisses = 3;   // beams skipped in a row (no echo, a spurious return) before it ends
+
 }  // namespace
+
+double BlockingWidth(const std::vector<float>& ranges_m, double angle_min_rad, double angle_increment_rad) {
+  const int n = static_cast<int>(ranges_m.size());
+  const auto point = [&](int i) -> std::optional<Vec2> {
+    const double r = ranges_m[static_cast<std::size_t>(i)];
+    if (!std::isfinite(r) || r <= 0.0) return std::nullopt;
+    const double a = angle_min_rad + static_cast<double>(i) * angle_increment_rad;
+    return Vec2{r * std::cos(a), r * std::sin(a)};
+  };
+  int nearest = -1;
+  double nearest_x = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < n; ++i) {
+    const std::optional<Vec2> p = point(i);
+    if (p && p->x > 0 && std::fabs(p->y) < p->x && p->x < nearest_x) {  // within ±45° ahead
+      nearest_x = p->x;
+      nearest = i;
+    }
+  }
+  if (nearest < 0) return 0.0;
+  const bool full_circle = std::fabs(std::fabs(angle_increment_rad) * n - 2.0 * M_PI) < 2.0 * std::fabs(angle_increment_rad);
+  double min_y = point(nearest)->y, max_y = min_y;
+  for (const int direction : {-1, 1}) {
+    Vec2 previous = *point(nearest);
+    int misses = 0;  // beams in a row without an echo or off the chain (dropouts, spurious short returns)
+    for (int k = 1; k < n && misses <= kBlockingMaxMisses; ++k) {
+      int i = nearest + direction * k;
+      if (i < 0 || i >= n) {
+        if (!full_circle) break;
+        i = (i + n) % n;
+      }
+      const std::optional<Vec2> p = point(i);
+      if (p && p->x <= 0) break;
+      if (!p || Norm(*p - previous) > kBlockingGapM) {
+        ++misses;
+        continue;
+      }
+      misses = 0;
+      min_y = std::min(min_y, p->y);
+      max_y = std::max(max_y, p->y);
+      previous = *p;
+    }
+  }
+  return max_y - min_y;
+}
 
 const char* SweepPhaseName(SweepPhase phase) {
   switch (phase) {
@@ -120,7 +171,10 @@ VelocityCommand CorridorSweep::Step(const std::vector<float>& ranges_m, double a
     return command;
   }
   if (!blocked_since_s_) blocked_since_s_ = time_s;
-  if (time_s - *blocked_since_s_ < options_.end_confirm_s) return command;  // a stop: wait for it to clear
+  const double wait_s = BlockingWidth(ranges_m, angle_min_rad, angle_increment_rad) >= options_.end_min_width_m
+                            ? options_.end_confirm_s
+                            : options_.narrow_end_confirm_s;
+  if (time_s - *blocked_since_s_ < wait_s) return command;  // a stop: wait for it to clear
   blocked_since_s_.reset();
   if (phase_ == SweepPhase::kFollowBack) {
     phase_ = SweepPhase::kDone;

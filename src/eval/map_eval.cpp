@@ -171,6 +171,7 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
   result.distance_m = sim.distance_travelled_m();
   result.sim_seconds = sim.time_s();
   result.degenerate_scans = session.slam().slam().stats().degenerate_scans;
+  result.plate_ranges_from_wall = static_cast<int>(session.counters().plate_ranges_from_wall);
 
   // The final map: with the back end on, its solve and the re-rendering happen here, once per run.
   const double map_t0 = ThreadCpuSeconds();

@@ -72,6 +72,7 @@ struct MapEvalResult {
   double width_accuracy = 0.0;
   int plate_reports = 0;             // extractor reports fed to AddPlate
   int plate_reports_used = 0;
+  int plate_ranges_from_wall = 0;    // MappingSession: ranges from the wall line (something before the plate)
   PlateScore plates;                 // under the start-pose alignment (world_from_map)
   PlateAlignment plate_fit;          // the best rigid fit of the mapped plates onto the true ones
   PlateScore plates_fitted;          // the plates scored under plate_fit.world_from_map (if ok)

@@ -58,6 +58,7 @@ Json MapEvalJson(const MapEvalResult& r, const MapEvalRunInfo& info) {
   for (const CorridorAccuracy& c : r.corridors) j["corridors"].push_back(CorridorJson(c));
   j["plate_reports"] = r.plate_reports;
   j["plate_reports_used"] = r.plate_reports_used;
+  j["plate_ranges_from_wall"] = r.plate_ranges_from_wall;
   j["final_position_error_m"] = r.final_position_error_m;
   j["trajectory_rmse_m"] = r.trajectory_rmse_m;
   j["trajectory_max_error_m"] = r.trajectory_max_error_m;

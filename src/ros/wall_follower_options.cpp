@@ -45,6 +45,14 @@ const ParamTable<WallFollowerNodeOptions>& WallFollowerParamTable() {
                "sweep/patrol: something within end_stop_distance_m ends a leg only after the robot has stood "
                "before it this long (a person in the lane walks on); 0: at once",
                r::NonNegative()),
+      Param<O>("end_min_width_m", DOORPLATE_PARAM_FIELD(sweep.end_min_width_m),
+               "sweep/patrol: something ahead narrower than this (a person standing in the lane) ends a leg only "
+               "after narrow_end_confirm_s; 0: every end waits end_confirm_s",
+               r::NonNegative()),
+      Param<O>("narrow_end_confirm_s", DOORPLATE_PARAM_FIELD(sweep.narrow_end_confirm_s),
+               "sweep/patrol: the wait before something narrower than end_min_width_m counts as the end; "
+               ">= end_confirm_s",
+               r::NonNegative()),
       Param<O>("explore/passes", DOORPLATE_PARAM_FIELD(explore.passes),
                "explore: 1 follows one side only (enough for a floor without loops); 2 also the other side of a "
                "ring",

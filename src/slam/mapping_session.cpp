@@ -93,7 +93,7 @@ bool MappingSession::ScanMayStillCome(double stamp_s) const {
   return stamp_s - scans_.back().stamp_s > options_.plate_range_max_scan_age_s;
 }
 
-std::optional<double> MappingSession::RangeFor(double stamp_s, double bearing_rad, std::string* why) const {
+std::optional<double> MappingSession::RangeFor(double stamp_s, double bearing_rad, std::string* why) {
   const TimedScan* nearest = nullptr;
   for (const TimedScan& s : scans_) {  // oldest first: `<=` keeps the newer on ties
     if (!nearest || std::abs(s.stamp_s - stamp_s) <= std::abs(nearest->stamp_s - stamp_s)) nearest = &s;
@@ -113,6 +113,14 @@ std::optional<double> MappingSession::RangeFor(double stamp_s, double bearing_ra
     out << "no echo within " << options_.slam.range_beam_window_rad << " rad of the bearing " << bearing_rad
         << " rad in the scan at " << nearest->stamp_s << " s";
     *why = out.str();
+    return range;
+  }
+  if (options_.slam.occluded_plate_margin_m > 0) {
+    const std::optional<double> wall = WallRangeAlongBearing(nearest->scan, bearing_rad, options_.slam.wall_range);
+    if (wall && *wall - *range >= options_.slam.occluded_plate_margin_m) {
+      ++counters_.plate_ranges_from_wall;
+      return wall;
+    }
   }
   return range;
 }

@@ -17,6 +17,14 @@ const TextSlamOptions& Validated(const TextSlamOptions& o) {
     fail("min_plate_range_m/max_plate_range_m: need 0 <= min < max");
   }
   if (!(o.range_beam_window_rad >= 0)) fail("range_beam_window_rad: must be >= 0");
+  if (!(o.occluded_plate_margin_m >= 0) || !std::isfinite(o.occluded_plate_margin_m)) {
+    fail("occluded_plate_margin_m: must be finite and >= 0");
+  }
+  try {
+    ValidateWallRangeOptions(o.wall_range);
+  } catch (const std::invalid_argument& e) {
+    fail(std::string("wall_range: ") + e.what());
+  }
   if (!(o.plate_sigma_m > 0)) fail("plate_sigma_m: must be > 0");
   if (!(o.association_radius_m > 0)) fail("association_radius_m: must be > 0");
   if (!(o.text_likelihood_gain >= 0)) fail("text_likelihood_gain: must be >= 0");

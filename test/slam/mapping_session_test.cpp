@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -156,6 +158,35 @@ TEST(MappingSession, ASightingTakesItsRangeFromTheScanNearestItsStampEvenWhenItA
   const MappingUpdate given = session.AddPlates(6.0, {0, 0.5, 0}, {Sighting("207", -M_PI / 2, 1.5)});
   EXPECT_EQ(*given.plates[0].sighting.range_m, 1.5);
   EXPECT_EQ(session.counters().plates_used, 3);
+}
+
+// A person stands between the robot and the plate when it is read: the echoes along the bearing hit the
+// person; the plate hangs on the wall behind, whose line the echoes either side trace.
+TEST(MappingSession, APlateReadPastSomeoneStandingBeforeItTakesTheWallsRange) {
+  std::vector<Segment> world = test::Corridor();
+  const std::vector<Segment> person = {{{-0.25, -0.4}, {0.25, -0.4}}, {{0.25, -0.4}, {0.25, -0.7}},
+                                       {{0.25, -0.7}, {-0.25, -0.7}}, {{-0.25, -0.7}, {-0.25, -0.4}}};
+  world.insert(world.end(), person.begin(), person.end());
+  const auto read_with = [&](double margin_m) {
+    MappingSessionOptions o = FewParticles(3);
+    o.slam.occluded_plate_margin_m = margin_m;
+    MappingSession session(o);
+    session.AddScan(0.0, {0, 0, 0}, test::Scan(world, {0, 0, 0}));
+    const MappingUpdate u = session.AddPlates(0.0, {0, 0, 0}, {Sighting("201", -M_PI / 2)});
+    EXPECT_TRUE(u.plates.at(0).result.used()) << u.plates.at(0).result.reason;
+    return std::make_pair(*u.plates.at(0).sighting.range_m, session.counters().plate_ranges_from_wall);
+  };
+  const auto [wall_range, from_wall] = read_with(0.15);
+  EXPECT_NEAR(wall_range, 1.025, 0.01);
+  EXPECT_EQ(from_wall, 1);
+  const auto [person_range, off] = read_with(0.0);  // the rule off: the echoes along the bearing
+  EXPECT_NEAR(person_range, 0.4, 0.01);
+  EXPECT_EQ(off, 0);
+  // No one before the plate: the echoes along the bearing, and the count stays 0.
+  MappingSession clear(FewParticles(3));
+  clear.AddScan(0.0, {0, 0, 0}, test::Scan(test::Corridor(), {0, 0, 0}));
+  EXPECT_NEAR(*clear.AddPlates(0.0, {0, 0, 0}, {Sighting("201", -M_PI / 2)}).plates.at(0).sighting.range_m, 1.025, 0.01);
+  EXPECT_EQ(clear.counters().plate_ranges_from_wall, 0);
 }
 
 // Live, the laser callbacks can fall behind (queued behind a back-end solve) while a detection arrives on

@@ -6,7 +6,8 @@
 // A leg ends where the wall follower stops before something ahead (WallFollowerOptions::end_stop_distance_m)
 // and it is still there after end_confirm_s of standing still: a person walking through the lane or a few
 // spurious laser returns (docs/results/laser-model.md) clear within a second or two, the corridor's end wall
-// (or the furniture parked at it) does not.
+// does not. Something narrower than end_min_width_m (a person who stopped in the lane, but also a bench or
+// bed parked at the end) must stay narrow_end_confirm_s (30 s) before it counts as the end.
 // Input each step: one laser scan in base_link (as WallFollower::Observe), the odometry pose (base_link in
 // odom; only its yaw is used, to measure the turn) and the scan's time in seconds (any monotonic clock).
 // Output: a velocity command for base_link.
@@ -46,6 +47,13 @@ struct CorridorSweepOptions {
   // Something ahead within follower.end_stop_distance_m ends the leg only once the robot has stood still
   // before it this long (0: at once). Until then the command is a stop.
   double end_confirm_s = 4.0;
+  // A corridor's end spans it; a person standing in the lane, a bench's end or a trolley is narrower. When
+  // the thing ahead (the returns joined to the nearest one ahead, each within 0.15 m of the next, ahead of
+  // the robot) is narrower than end_min_width_m across the robot's heading, the leg ends only after
+  // narrow_end_confirm_s of standing before it (people who stop to talk walk on; a narrow dead end is
+  // still an end). end_min_width_m 0: every end waits end_confirm_s only.
+  double end_min_width_m = 0.8;
+  double narrow_end_confirm_s = 30.0;
   // Wall direction check: a corridor's wall is straight, so during a leg its direction in the odom frame
   // (odometry yaw + fitted wall angle) stays put; it is taken from the first fit the robot runs parallel to
   // (within parallel_tolerance_rad). A fit more than max_wall_turn_rad from the leg's wall
@@ -66,6 +74,12 @@ struct CorridorSweepOptions {
   // still turned after a kidnap, must not steer it across the corridor for the rest of the leg).
   double wall_reacquire_s = 8.0;
 };
+
+// The width (metres, across the robot's heading) of the thing nearest ahead in a scan in base_link (x ahead,
+// y left): the returns joined to the nearest return within ±45° of straight ahead, each within 0.15 m of the
+// next, while they lie ahead of the robot (x > 0). An end wall joins the side walls: the corridor's width.
+// 0 when nothing is ahead.
+double BlockingWidth(const std::vector<float>& ranges_m, double angle_min_rad, double angle_increment_rad);
 
 enum class SweepPhase { kFollowOut, kTurnAround, kFollowBack, kDone };
 

@@ -28,7 +28,10 @@
 //    beyond that the oldest is applied at once.
 //  - Plate range (a sighting without range_m): PlateRangeAlongBearing (text_slam.h, slam.range_beam_window_rad)
 //    in the received scan nearest in time to the sighting (ties: the newer), if within
-//    plate_range_max_scan_age_s of it; else the sighting has no range (PlateOutcome::kNoRange).
+//    plate_range_max_scan_age_s of it; else the sighting has no range (PlateOutcome::kNoRange). When that
+//    range is at least slam.occluded_plate_margin_m shorter than the wall line around the bearing in the
+//    same scan (WallRangeAlongBearing, plate_range.h), something stood before the plate and the wall
+//    line's range is taken (counted in plate_ranges_from_wall).
 //  - The back end is solved by Solve() only: explicitly, or after a processed scan when
 //    map_update_interval_s > 0 and that long passed (scan stamps) since the last solve. Solve() also
 //    rebuilds Map() and GetTextMap() and recomputes MapToOdom().
@@ -93,6 +96,7 @@ struct MappingSessionCounters {
   long long plate_sightings = 0;    // given to AddPlates
   long long plates_held = 0;        // held for a scan near their stamp (applied later, or still waiting)
   long long plates_used = 0;        // TextSlamPlateResult::used
+  long long plate_ranges_from_wall = 0;  // ranges taken from the wall line (something stood before the plate)
   long long solves = 0;
 };
 
@@ -147,7 +151,7 @@ class MappingSession {
     PlateSighting sighting;
   };
   // nullopt with *why set (which of the two rules failed, with the stamps) when there is no range.
-  std::optional<double> RangeFor(double stamp_s, double bearing_rad, std::string* why) const;
+  std::optional<double> RangeFor(double stamp_s, double bearing_rad, std::string* why);
   // True when a scan nearer in time to `stamp_s` may still arrive: none within the age limit, none newer.
   bool ScanMayStillCome(double stamp_s) const;
   // Range rule + TextSlam::AddPlate; the outcome goes to update->plates. Returns whether it was used.

@@ -21,6 +21,7 @@
 #include "doorplate_localization/common/room_id.h"
 #include "doorplate_localization/maps/occupancy_grid.h"
 #include "doorplate_localization/maps/text_map.h"
+#include "doorplate_localization/slam/plate_range.h"
 #include "doorplate_localization/slam/rbpf_slam.h"
 #include "doorplate_localization/slam/slam_back_end.h"
 
@@ -36,6 +37,11 @@ struct TextSlamOptions {
   double min_plate_range_m = 0.2;       // plate ranges outside [min, max] are ignored (bad beam)
   double max_plate_range_m = 5.0;
   double range_beam_window_rad = 0.03;  // PlateRangeAlongBearing: median of beams within ± this
+  // A plate hangs on a wall: when the echoes along its bearing are at least this much shorter than the wall
+  // line around it (WallRangeAlongBearing, plate_range.h), something stands between the robot and the
+  // plate (a person, a trolley) and the plate's range is the wall line's. 0: off (echoes along the bearing).
+  double occluded_plate_margin_m = 0.15;
+  WallRangeOptions wall_range;
   double plate_sigma_m = 0.15;          // 1-sigma error of one plate position measurement
   double association_radius_m = 3.0;    // a same-text reading this close to a particle's landmark re-observes it
   double text_likelihood_gain = 1.0;    // multiplies the re-observation log-likelihood
