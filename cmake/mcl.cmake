@@ -27,7 +27,7 @@ add_library(doorplate_mcl
   src/mcl/floor_belief.cpp
   src/mcl/building_session.cpp)
 target_include_directories(doorplate_mcl PUBLIC include PRIVATE ${OpenCV_INCLUDE_DIRS})
-target_link_libraries(doorplate_mcl PUBLIC doorplate_common Eigen3::Eigen PRIVATE opencv_core opencv_imgproc)
+target_link_libraries(doorplate_mcl PUBLIC doorplate_common doorplate_sensors Eigen3::Eigen PRIVATE opencv_core opencv_imgproc)
 install(TARGETS doorplate_mcl LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 
 # Time per UpdateLaser (likelihood field) for 500/2000/5000 particles and 60/360 beams, one core.

@@ -5,7 +5,6 @@ add_library(doorplate_slam
   src/slam/correlative_search.cpp
   src/slam/mapping_session.cpp
   src/slam/motion_model.cpp
-  src/slam/plate_range.cpp
   src/slam/pose_graph.cpp
   src/slam/rbpf_slam.cpp
   src/slam/rbpf_slam_options.cpp
@@ -20,9 +19,8 @@ add_library(doorplate_slam
 find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
 find_library(CHOLMOD_LIBRARY cholmod REQUIRED)
 target_include_directories(doorplate_slam PUBLIC include PRIVATE ${CHOLMOD_INCLUDE_DIR})
-# OpenCV's Hough transform and line fit find the wall behind a plate (plate_range.h).
-target_link_libraries(doorplate_slam PUBLIC doorplate_common doorplate_maps Eigen3::Eigen
-  PRIVATE ${CHOLMOD_LIBRARY} opencv_core opencv_imgproc)
+target_link_libraries(doorplate_slam PUBLIC doorplate_common doorplate_maps doorplate_sensors Eigen3::Eigen
+  PRIVATE ${CHOLMOD_LIBRARY})
 install(TARGETS doorplate_slam LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 
 add_executable(doorplate_map_log src/tools/map_carmen.cpp)
@@ -43,7 +41,7 @@ if(mrpt-obs_FOUND)
 endif()
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(name carmen_reader correlative_search tiled_grid scan_matcher motion_model trajectory_tree rbpf_slam rbpf_slam_options text_slam mapping_session plate_range pose_graph scan_icp slam_back_end)
+  foreach(name carmen_reader correlative_search tiled_grid scan_matcher motion_model trajectory_tree rbpf_slam rbpf_slam_options text_slam mapping_session pose_graph scan_icp slam_back_end)
     doorplate_add_core_test(${name}_test test/slam/${name}_test.cpp doorplate_slam)
   endforeach()
 endif()

@@ -74,34 +74,6 @@ std::vector<SelectedBeam> SelectBeams(const LocalizationScan& scan, const BeamSe
   return beams;
 }
 
-std::optional<double> RangeAlongBearing(const LocalizationScan& scan, double bearing_rad,
-                                        double max_bearing_error_rad) {
-  if (scan.ranges_m.empty() || !(std::fabs(scan.angle_increment_rad) > 0.0) || !std::isfinite(bearing_rad)) {
-    return std::nullopt;
-  }
-  const bool at_origin = scan.laser_pose.x_m == 0.0 && scan.laser_pose.y_m == 0.0;
-  std::optional<double> best_range;
-  double best_error = max_bearing_error_rad;
-  for (size_t i = 0; i < scan.ranges_m.size(); ++i) {  // a linear search: plate readings are rare
-    const float r = scan.ranges_m[i];
-    if (ClassifyRange(r, scan.min_range_m, scan.max_range_m) != BeamKind::kHit) continue;
-    const double a = scan.angle_min_rad + static_cast<double>(i) * scan.angle_increment_rad;
-    double error = 0.0, range = r;
-    if (at_origin) {
-      error = std::fabs(NormalizeAngle(a + scan.laser_pose.theta_rad - bearing_rad));
-    } else {
-      const Vec2 end = scan.laser_pose.TransformPoint({r * std::cos(a), r * std::sin(a)});
-      error = std::fabs(NormalizeAngle(std::atan2(end.y, end.x) - bearing_rad));
-      range = Norm(end);
-    }
-    if (error <= best_error) {
-      best_error = error;
-      best_range = range;
-    }
-  }
-  return best_range;
-}
-
 PlateReading PlateReadingAt(const std::string& text, double confidence, double bearing_rad,
                             std::optional<double> range_m) {
   PlateReading reading;

@@ -16,8 +16,11 @@ void Require(bool ok, const char* field, const char* rule) {
 }
 
 void Validate(const TextAmclSessionOptions& o) {
-  Require(std::isfinite(o.text_range_max_bearing_error_rad) && o.text_range_max_bearing_error_rad >= 0.0,
-          "text_range_max_bearing_error_rad", "must be finite and >= 0");
+  try {
+    ValidatePlateRangeOptions(o.plate_range);
+  } catch (const std::invalid_argument& e) {
+    Require(false, "plate_range", e.what());
+  }
   Require(std::isfinite(o.text_range_max_scan_age_s) && o.text_range_max_scan_age_s >= 0.0,
           "text_range_max_scan_age_s", "must be finite and >= 0");
   Require(std::isfinite(o.odometry_history_s) && o.odometry_history_s > 0.0, "odometry_history_s",
@@ -244,7 +247,16 @@ std::optional<double> TextAmclSession::RangeFor(double stamp_s, double bearing_r
     if (std::fabs(s.stamp_s - stamp_s) < std::fabs(nearest->stamp_s - stamp_s)) nearest = &s;
   }
   if (std::fabs(nearest->stamp_s - stamp_s) > options_.text_range_max_scan_age_s) return std::nullopt;
-  return RangeAlongBearing(nearest->scan, bearing_rad, options_.text_range_max_bearing_error_rad);
+  BeamGeometry geometry;
+  geometry.angle_min_rad = nearest->scan.angle_min_rad;
+  geometry.angle_increment_rad = nearest->scan.angle_increment_rad;
+  geometry.min_range_m = nearest->scan.min_range_m;
+  geometry.max_range_m = nearest->scan.max_range_m;
+  geometry.laser_pose = nearest->scan.laser_pose;
+  const std::optional<PlateRange> range =
+      PlateRangeAlongBearing(nearest->scan.ranges_m, geometry, bearing_rad, options_.plate_range);
+  if (!range) return std::nullopt;
+  return range->range_m;
 }
 
 void TextAmclSession::ApplyReading(const PendingReading& pending, SessionUpdate* update) {

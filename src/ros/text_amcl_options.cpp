@@ -232,10 +232,14 @@ const ParamTable<O>& TextAmclParamTable() {
       Param<O>("text_reseed_wall_distance_max_m", F(plate_sampler.typical_view_distance_max_m),
                "plate pose sampler; >= text_reseed_wall_distance_min_m", r::Positive()),
       Param<O>("text_use_laser_range", DOORPLATE_PARAM_FIELD(session.text_use_laser_range),
-               "the reading's range is the beam along its bearing in the scan nearest in time to the reading "
-               "(`TextAmclSession`'s range rule, also used by `doorplate_eval localize` and the soak)"),
-      Param<O>("text_range_max_bearing_error_rad", DOORPLATE_PARAM_FIELD(session.text_range_max_bearing_error_rad),
-               "that beam must lie this close in bearing", r::Positive()),
+               "the reading's range is the laser's along its bearing in the scan nearest in time to the reading "
+               "(`PlateRangeAlongBearing`, sensors/plate_range.h: the mapping's rule too)"),
+      Param<O>("text_range_max_bearing_error_rad", DOORPLATE_PARAM_FIELD(session.plate_range.beam_window_rad),
+               "the range is the median of the echoes within this of the bearing", r::Positive()),
+      Param<O>("text_range_occluded_margin_m", DOORPLATE_PARAM_FIELD(session.plate_range.occluded_margin_m),
+               "when that median is this much shorter than the wall line around the bearing, someone stood "
+               "before the plate and the wall's range is taken; 0: off",
+               r::NonNegative()),
       Param<O>("text_range_max_scan_age_s", DOORPLATE_PARAM_FIELD(session.text_range_max_scan_age_s),
                "and that scan must be this close in time to the reading (a laser outage gives no range)",
                r::Positive()),

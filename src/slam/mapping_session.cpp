@@ -107,22 +107,21 @@ std::optional<double> MappingSession::RangeFor(double stamp_s, double bearing_ra
     *why = out.str();
     return std::nullopt;
   }
-  const std::optional<double> range =
-      PlateRangeAlongBearing(nearest->scan, bearing_rad, options_.slam.range_beam_window_rad);
+  BeamGeometry geometry;
+  geometry.angle_min_rad = nearest->scan.angle_min_rad;
+  geometry.angle_increment_rad = nearest->scan.angle_increment_rad;
+  geometry.min_range_m = nearest->scan.min_range_m;
+  geometry.laser_pose = nearest->scan.laser_pose;
+  const std::optional<PlateRange> range =
+      PlateRangeAlongBearing(nearest->scan.ranges_m, geometry, bearing_rad, options_.slam.plate_range);
   if (!range) {
-    out << "no echo within " << options_.slam.range_beam_window_rad << " rad of the bearing " << bearing_rad
+    out << "no echo within " << options_.slam.plate_range.beam_window_rad << " rad of the bearing " << bearing_rad
         << " rad in the scan at " << nearest->stamp_s << " s";
     *why = out.str();
-    return range;
+    return std::nullopt;
   }
-  if (options_.slam.occluded_plate_margin_m > 0) {
-    const std::optional<double> wall = WallRangeAlongBearing(nearest->scan, bearing_rad, options_.slam.wall_range);
-    if (wall && *wall - *range >= options_.slam.occluded_plate_margin_m) {
-      ++counters_.plate_ranges_from_wall;
-      return wall;
-    }
-  }
-  return range;
+  if (range->from_wall) ++counters_.plate_ranges_from_wall;
+  return range->range_m;
 }
 
 MappingUpdate MappingSession::AddPlates(double stamp_s, const Pose2D& base_in_odom,

@@ -16,14 +16,10 @@ const TextSlamOptions& Validated(const TextSlamOptions& o) {
   if (!(o.min_plate_range_m >= 0) || !(o.max_plate_range_m > o.min_plate_range_m)) {
     fail("min_plate_range_m/max_plate_range_m: need 0 <= min < max");
   }
-  if (!(o.range_beam_window_rad >= 0)) fail("range_beam_window_rad: must be >= 0");
-  if (!(o.occluded_plate_margin_m >= 0) || !std::isfinite(o.occluded_plate_margin_m)) {
-    fail("occluded_plate_margin_m: must be finite and >= 0");
-  }
   try {
-    ValidateWallRangeOptions(o.wall_range);
+    ValidatePlateRangeOptions(o.plate_range);
   } catch (const std::invalid_argument& e) {
-    fail(std::string("wall_range: ") + e.what());
+    fail(std::string("plate_range: ") + e.what());
   }
   if (!(o.plate_sigma_m > 0)) fail("plate_sigma_m: must be > 0");
   if (!(o.association_radius_m > 0)) fail("association_radius_m: must be > 0");
@@ -79,23 +75,6 @@ TextSlam::TextSlam(const TextSlamOptions& options)
       room_grammar_(options.room_pattern),
       slam_(options.slam),
       back_end_(BackEndOptions(options)) {}
-
-std::optional<double> PlateRangeAlongBearing(const RangeScan& scan, double bearing_rad, double window_rad) {
-  // The plate's bearing is from base_link; beams are from the laser. For a laser near base_link (the
-  // usual mount) the difference is the mounting offset, corrected below by intersecting the beam.
-  std::vector<double> ranges;
-  const double half = std::max(window_rad, std::abs(scan.angle_increment_rad) * 0.51);
-  for (int i = 0; i < static_cast<int>(scan.ranges_m.size()); ++i) {
-    const double r = scan.ranges_m[i];
-    if (!std::isfinite(r) || r < scan.min_range_m) continue;
-    const double a = scan.BeamAngle(i);
-    const Vec2 end = scan.laser_pose.TransformPoint({r * std::cos(a), r * std::sin(a)});
-    if (std::abs(NormalizeAngle(std::atan2(end.y, end.x) - bearing_rad)) <= half) ranges.push_back(Norm(end));
-  }
-  if (ranges.empty()) return std::nullopt;
-  std::nth_element(ranges.begin(), ranges.begin() + ranges.size() / 2, ranges.end());
-  return ranges[ranges.size() / 2];
-}
 
 bool TextSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index, bool force_update) {
   ValidatePose(odometry_pose, "TextSlam::AddScan");

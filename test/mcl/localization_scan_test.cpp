@@ -94,76 +94,7 @@ TEST(ValidateLocalizationScan, NamesTheBadField) {
   EXPECT_EQ(ValidateLocalizationScan(s), "");
 }
 
-// --- RangeAlongBearing / PlateReadingAt ---
-
-// A 360° scan of 8 beams (45° apart, from -pi) with ranges 1..8 m, laser at the robot's centre.
-LocalizationScan EightBeams() {
-  LocalizationScan scan;
-  scan.angle_min_rad = -M_PI;
-  scan.angle_increment_rad = M_PI / 4.0;
-  scan.min_range_m = 0.15;
-  scan.max_range_m = 16.0;
-  scan.ranges_m = {1, 2, 3, 4, 5, 6, 7, 8};
-  return scan;
-}
-
-// 360 beams over a full turn, every range `range_m`, laser at `mount` in base_link.
-LocalizationScan RingScan(float range_m, const Pose2D& mount = {}) {
-  LocalizationScan scan;
-  scan.angle_min_rad = -M_PI;
-  scan.angle_increment_rad = 2 * M_PI / 360;
-  scan.min_range_m = 0.15;
-  scan.max_range_m = 12.0;
-  scan.ranges_m.assign(360, range_m);
-  scan.laser_pose = mount;
-  return scan;
-}
-
-TEST(RangeAlongBearing, ReturnsTheBeamNearestTheBearing) {
-  const LocalizationScan scan = EightBeams();
-  EXPECT_EQ(RangeAlongBearing(scan, M_PI / 2.0, 0.1), 7.0);        // beam 6 at +90°: the left wall
-  EXPECT_EQ(RangeAlongBearing(scan, M_PI / 2.0 + 0.05, 0.1), 7.0);
-  EXPECT_EQ(RangeAlongBearing(scan, 0.0, 0.1), 5.0);
-  EXPECT_EQ(RangeAlongBearing(scan, M_PI - 0.01, 0.1), 1.0);       // wraps to beam 0 at -180°
-}
-
-TEST(RangeAlongBearing, AccountsForTheLaserMountingYaw) {
-  LocalizationScan scan = EightBeams();
-  scan.laser_pose.theta_rad = M_PI / 4.0;  // beam 6 (+90° in the laser) points at +135° in base_link
-  EXPECT_EQ(RangeAlongBearing(scan, 3.0 * M_PI / 4.0, 0.1), 7.0);
-}
-
-TEST(RangeAlongBearing, GivesNothingWithoutAnEchoOrABeamCloseEnough) {
-  LocalizationScan scan = EightBeams();
-  EXPECT_FALSE(RangeAlongBearing(scan, M_PI / 8.0, 0.1).has_value());  // halfway between two beams
-  scan.ranges_m[6] = std::numeric_limits<float>::infinity();
-  EXPECT_FALSE(RangeAlongBearing(scan, M_PI / 2.0, 0.1).has_value());
-  scan.ranges_m[6] = std::nanf("");
-  EXPECT_FALSE(RangeAlongBearing(scan, M_PI / 2.0, 0.1).has_value());
-  scan.ranges_m[6] = 0.1f;  // below min range
-  EXPECT_FALSE(RangeAlongBearing(scan, M_PI / 2.0, 0.1).has_value());
-  EXPECT_FALSE(RangeAlongBearing(scan, std::nan(""), 0.1).has_value());
-  EXPECT_FALSE(RangeAlongBearing(LocalizationScan{}, 0.0, 0.1).has_value());
-}
-
-TEST(RangeAlongBearing, MeasuresFromBaseLinkThroughAnOffsetLaser) {
-  const LocalizationScan centred = RingScan(2.0f);
-  ASSERT_TRUE(RangeAlongBearing(centred, M_PI / 2, 0.02).has_value());
-  EXPECT_NEAR(*RangeAlongBearing(centred, M_PI / 2, 0.02), 2.0, 1e-6);
-  // Laser 0.3 m ahead of base_link: the wall point seen at 90° from base_link is a beam at ~98.6° of
-  // the laser, sqrt(2² - 0.3²) = 1.977 m from base_link.
-  const LocalizationScan ahead = RingScan(2.0f, Pose2D{0.3, 0.0, 0.0});
-  ASSERT_TRUE(RangeAlongBearing(ahead, M_PI / 2, 0.02).has_value());
-  EXPECT_NEAR(*RangeAlongBearing(ahead, M_PI / 2, 0.02), std::sqrt(4.0 - 0.09), 0.02);
-}
-
-TEST(RangeAlongBearing, NoRangeWithoutAValidEchoNearTheBearing) {
-  LocalizationScan scan = RingScan(kInf);
-  EXPECT_FALSE(RangeAlongBearing(scan, 0.0, 0.05).has_value());
-  scan.ranges_m[180] = 3.0f;  // the beam at 0 rad
-  EXPECT_TRUE(RangeAlongBearing(scan, 0.0, 0.05).has_value());
-  EXPECT_FALSE(RangeAlongBearing(scan, 0.2, 0.05).has_value());  // too far off that beam
-}
+// --- PlateReadingAt (plate ranges: sensors/plate_range.h, test/sensors/plate_range_test.cpp) ---
 
 TEST(PlateReadingAt, WrapsTheBearingKeepsANonFiniteOneAndLeavesTheCameraSideUnknown) {
   const PlateReading r = PlateReadingAt("214", 0.8, 3.0 * M_PI / 2.0, 1.4);

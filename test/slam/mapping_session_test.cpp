@@ -169,7 +169,7 @@ TEST(MappingSession, APlateReadPastSomeoneStandingBeforeItTakesTheWallsRange) {
   world.insert(world.end(), person.begin(), person.end());
   const auto read_with = [&](double margin_m) {
     MappingSessionOptions o = FewParticles(3);
-    o.slam.occluded_plate_margin_m = margin_m;
+    o.slam.plate_range.occluded_margin_m = margin_m;
     MappingSession session(o);
     session.AddScan(0.0, {0, 0, 0}, test::Scan(world, {0, 0, 0}));
     const MappingUpdate u = session.AddPlates(0.0, {0, 0, 0}, {Sighting("201", -M_PI / 2)});

@@ -51,17 +51,6 @@ TEST(TextSlam, APlateIsPlacedAtThePoseComposedWithBearingAndRangeFacingTheRobot)
   EXPECT_EQ(slam.num_landmarks(), 1);
 }
 
-TEST(PlateRangeAlongBearing, TakesTheBeamAlongTheBearingSeenFromBaseLink) {
-  const RangeScan room = test::Scan(test::Room(), {0, 0, 0});
-  EXPECT_NEAR(*PlateRangeAlongBearing(room, -M_PI / 2, 0.03), 2.025, 0.01);  // the south wall
-  // A laser mounted 0.3 m ahead of base_link: the plate's bearing is still from base_link.
-  RangeScan mounted = test::Scan(test::Room(), {0.3, 0, 0});
-  mounted.laser_pose = {0.3, 0, 0};
-  EXPECT_NEAR(*PlateRangeAlongBearing(mounted, -M_PI / 2, 0.03), 2.025, 0.01);
-  // Straight ahead along the corridor nothing echoes within 20 m: no range.
-  EXPECT_FALSE(PlateRangeAlongBearing(test::Scan(test::Corridor(), {0, 0, 0}), 0.0, 0.03).has_value());
-}
-
 TEST(TextSlam, WithoutARangeAReadingIsIgnored) {
   TextSlam slam(FewParticles(3));
   slam.AddScan(test::Scan(test::Room(), {0, 0, 0}), {0, 0, 0}, 0);

@@ -61,17 +61,6 @@ double EffectiveMaxRange(const LocalizationScan& scan, const BeamSelectionOption
 // std::invalid_argument naming the field when the scan or the options are unusable.
 std::vector<SelectedBeam> SelectBeams(const LocalizationScan& scan, const BeamSelectionOptions& options);
 
-// --- a plate's range from the laser (the paper's text observation z = (text, bearing, range)) ---
-// The laser range from base_link to the first obstacle seen at `bearing_rad` (base_link frame, radians
-// counter-clockwise): among the echo beams (ClassifyRange == kHit), the one whose end point, placed in
-// base_link through scan.laser_pose (so a laser mounted off base_link's origin is handled), lies closest
-// in bearing seen from base_link, if within `max_bearing_error_rad`; its distance from base_link in metres
-// (the reading itself, exactly, for a laser at base_link's origin). nullopt when there is no such beam,
-// the scan is empty or has a zero angle increment, or the bearing is not finite. The Text AMCL nodelet and
-// the localization experiment both measure plate ranges with it.
-std::optional<double> RangeAlongBearing(const LocalizationScan& scan, double bearing_rad,
-                                        double max_bearing_error_rad);
-
 // A plate reading of `text` with `confidence`, seen at `bearing_rad` in base_link (wrapped to (-pi, pi];
 // a non-finite bearing is kept as given, for ValidatePlateReading to name), with `range_m` (metres,
 // base_link -> plate; nullopt = unknown) and camera side unknown. Callers validate it.

@@ -21,10 +21,11 @@
 //    (forced) before its laser update. No laser update is forced for a plate: the scan at hand was taken at
 //    another time and has been (or will be) used at its own stamp; using it again would count it twice.
 //    Readings are applied in stamp order, and before a scan with a later stamp.
-//  - Plate range: the laser range along the reading's bearing (RangeAlongBearing, localization_scan.h)
-//    in the scan nearest in time to the reading among the last two received, if within
-//    text_range_max_scan_age_s of it; one angular tolerance, text_range_max_bearing_error_rad. The input
-//    reading's range_m is ignored (the session measures it).
+//  - Plate range: PlateRangeAlongBearing (sensors/plate_range.h, plate_range: the median of the echoes
+//    within ± beam_window_rad of the reading's bearing, or the wall line behind someone standing before the
+//    plate; the mapping session's rule) in the scan nearest in time to the reading among the last two
+//    received, if within text_range_max_scan_age_s of it. The input reading's range_m is ignored (the
+//    session measures it).
 //  - Unknown rooms: a reading no plate of the text map can explain (TextMatcher::Compatible with the
 //    plate model's text_match options is empty) is dropped and counted when it arrives (AddPlates), before
 //    any ordering; the first reading of each such room is flagged (kUnknownRoomFirst) so the caller
@@ -55,6 +56,7 @@
 #include "doorplate_localization/mcl/text_amcl.h"
 #include "doorplate_localization/mcl/text_amcl_setup.h"
 #include "doorplate_localization/mcl/text_match.h"
+#include "doorplate_localization/sensors/plate_range.h"
 
 namespace doorplate_localization {
 
@@ -67,7 +69,7 @@ struct TextAmclSessionOptions {
   Eigen::Matrix3d initial_covariance = Eigen::Vector3d(0.25, 0.25, (M_PI / 12.0) * (M_PI / 12.0)).asDiagonal();
   // Plate range from the laser (see the file comment). false: readings are bearing-only.
   bool text_use_laser_range = true;
-  double text_range_max_bearing_error_rad = 0.03;
+  PlateRangeOptions plate_range;
   double text_range_max_scan_age_s = 0.5;
   // Odometry kept for readings that arrive late; an older reading is dropped (kStale).
   double odometry_history_s = 10.0;

@@ -26,12 +26,11 @@
 //    detections were recorded before those scans) is held and applied by the first AddScan that takes a
 //    scan stamped at or after it (in that call's MappingUpdate::plates). At most kMaxHeldPlates wait;
 //    beyond that the oldest is applied at once.
-//  - Plate range (a sighting without range_m): PlateRangeAlongBearing (text_slam.h, slam.range_beam_window_rad)
-//    in the received scan nearest in time to the sighting (ties: the newer), if within
-//    plate_range_max_scan_age_s of it; else the sighting has no range (PlateOutcome::kNoRange). When that
-//    range is at least slam.occluded_plate_margin_m shorter than the wall line around the bearing in the
-//    same scan (WallRangeAlongBearing, plate_range.h), something stood before the plate and the wall
-//    line's range is taken (counted in plate_ranges_from_wall).
+//  - Plate range (a sighting without range_m): PlateRangeAlongBearing (sensors/plate_range.h,
+//    slam.plate_range: the echoes along the bearing, or the wall line behind someone standing before the
+//    plate, counted in plate_ranges_from_wall) in the received scan nearest in time to the sighting (ties:
+//    the newer), if within plate_range_max_scan_age_s of it; else the sighting has no range
+//    (PlateOutcome::kNoRange).
 //  - The back end is solved by Solve() only: explicitly, or after a processed scan when
 //    map_update_interval_s > 0 and that long passed (scan stamps) since the last solve. Solve() also
 //    rebuilds Map() and GetTextMap() and recomputes MapToOdom().

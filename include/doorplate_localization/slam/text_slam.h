@@ -21,7 +21,7 @@
 #include "doorplate_localization/common/room_id.h"
 #include "doorplate_localization/maps/occupancy_grid.h"
 #include "doorplate_localization/maps/text_map.h"
-#include "doorplate_localization/slam/plate_range.h"
+#include "doorplate_localization/sensors/plate_range.h"
 #include "doorplate_localization/slam/rbpf_slam.h"
 #include "doorplate_localization/slam/slam_back_end.h"
 
@@ -36,12 +36,9 @@ struct TextSlamOptions {
   double min_confidence = 0.5;          // readings less sure than this are ignored
   double min_plate_range_m = 0.2;       // plate ranges outside [min, max] are ignored (bad beam)
   double max_plate_range_m = 5.0;
-  double range_beam_window_rad = 0.03;  // PlateRangeAlongBearing: median of beams within ± this
-  // A plate hangs on a wall: when the echoes along its bearing are at least this much shorter than the wall
-  // line around it (WallRangeAlongBearing, plate_range.h), something stands between the robot and the
-  // plate (a person, a trolley) and the plate's range is the wall line's. 0: off (echoes along the bearing).
-  double occluded_plate_margin_m = 0.15;
-  WallRangeOptions wall_range;
+  // A sighting's range when it has none: PlateRangeAlongBearing (sensors/plate_range.h) in the scan nearest
+  // in time (MappingSession). Names: text.range_beam_window_rad, text.occluded_plate_margin_m, text.wall_range.*
+  PlateRangeOptions plate_range;
   double plate_sigma_m = 0.15;          // 1-sigma error of one plate position measurement
   double association_radius_m = 3.0;    // a same-text reading this close to a particle's landmark re-observes it
   double text_likelihood_gain = 1.0;    // multiplies the re-observation log-likelihood
@@ -61,17 +58,12 @@ struct PlateSighting {
   double confidence = 1.0;          // probability that `text` is right, [0, 1]
   double bearing_rad = 0.0;         // plate centre seen from base_link, CCW from x forward, [-pi, pi]
   std::optional<double> range_m;    // base_link -> plate centre on the floor plane; unset: kNoRange
-                                    // (MappingSession sets it from a scan, PlateRangeAlongBearing)
+                                    // (MappingSession sets it from a scan, sensors/plate_range.h)
 };
 
 // Throws std::invalid_argument naming the field ("PlateSighting.bearing_rad: ...") for NaN or out-of-range
 // fields or an empty text.
 void ValidatePlateSighting(const PlateSighting& sighting);
-
-// The range to a plate at `bearing_rad` (base_link, CCW) from `scan`: the median distance from base_link
-// of the echoes whose end point lies within ± max(window_rad, 0.51 beam increments) of the bearing seen
-// from base_link (the laser's mounting offset is accounted for). nullopt when no echo is that close.
-std::optional<double> PlateRangeAlongBearing(const RangeScan& scan, double bearing_rad, double window_rad);
 
 enum class PlateOutcome {
   kNewLandmark,          // used: first reading of this text near here, a landmark was added
