@@ -247,14 +247,8 @@ std::optional<double> TextAmclSession::RangeFor(double stamp_s, double bearing_r
     if (std::fabs(s.stamp_s - stamp_s) < std::fabs(nearest->stamp_s - stamp_s)) nearest = &s;
   }
   if (std::fabs(nearest->stamp_s - stamp_s) > options_.text_range_max_scan_age_s) return std::nullopt;
-  BeamGeometry geometry;
-  geometry.angle_min_rad = nearest->scan.angle_min_rad;
-  geometry.angle_increment_rad = nearest->scan.angle_increment_rad;
-  geometry.min_range_m = nearest->scan.min_range_m;
-  geometry.max_range_m = nearest->scan.max_range_m;
-  geometry.laser_pose = nearest->scan.laser_pose;
   const std::optional<PlateRange> range =
-      PlateRangeAlongBearing(nearest->scan.ranges_m, geometry, bearing_rad, options_.plate_range);
+      PlateRangeAlongBearing(nearest->scan.ranges_m, BeamGeometryOf(nearest->scan), bearing_rad, options_.plate_range);
   if (!range) return std::nullopt;
   return range->range_m;
 }

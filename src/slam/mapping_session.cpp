@@ -107,13 +107,8 @@ std::optional<double> MappingSession::RangeFor(double stamp_s, double bearing_ra
     *why = out.str();
     return std::nullopt;
   }
-  BeamGeometry geometry;
-  geometry.angle_min_rad = nearest->scan.angle_min_rad;
-  geometry.angle_increment_rad = nearest->scan.angle_increment_rad;
-  geometry.min_range_m = nearest->scan.min_range_m;
-  geometry.laser_pose = nearest->scan.laser_pose;
-  const std::optional<PlateRange> range =
-      PlateRangeAlongBearing(nearest->scan.ranges_m, geometry, bearing_rad, options_.slam.plate_range);
+  const std::optional<PlateRange> range = PlateRangeAlongBearing(
+      nearest->scan.ranges_m, BeamGeometryOf(nearest->scan), bearing_rad, options_.slam.plate_range);
   if (!range) {
     out << "no echo within " << options_.slam.plate_range.beam_window_rad << " rad of the bearing " << bearing_rad
         << " rad in the scan at " << nearest->stamp_s << " s";

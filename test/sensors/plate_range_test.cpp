@@ -23,11 +23,7 @@ struct Beams {
 };
 Beams ScanOf(const std::vector<Segment>& walls, const Pose2D& pose, const Pose2D& mount = {}) {
   const RangeScan scan = test::Scan(walls, pose);
-  Beams b;
-  b.ranges_m = scan.ranges_m;
-  b.geometry.angle_min_rad = scan.angle_min_rad;
-  b.geometry.angle_increment_rad = scan.angle_increment_rad;
-  b.geometry.min_range_m = scan.min_range_m;
+  Beams b{scan.ranges_m, BeamGeometryOf(scan)};
   b.geometry.laser_pose = mount;
   return b;
 }

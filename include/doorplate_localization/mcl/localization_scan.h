@@ -10,6 +10,7 @@
 
 #include "doorplate_localization/common/geometry2d.h"
 #include "doorplate_localization/mcl/plate_reading.h"
+#include "doorplate_localization/sensors/plate_range.h"
 
 namespace doorplate_localization {
 
@@ -21,6 +22,17 @@ struct LocalizationScan {
   std::vector<float> ranges_m;       // REP-117: +inf = no echo within max range, -inf = too close, NaN = error
   Pose2D laser_pose;                 // laser frame in base_link (the mounting pose)
 };
+
+// The scan's beams as the shared sensor rules read them (sensors/plate_range.h).
+inline BeamGeometry BeamGeometryOf(const LocalizationScan& scan) {
+  BeamGeometry g;
+  g.angle_min_rad = scan.angle_min_rad;
+  g.angle_increment_rad = scan.angle_increment_rad;
+  g.min_range_m = scan.min_range_m;
+  g.max_range_m = scan.max_range_m;
+  g.laser_pose = scan.laser_pose;
+  return g;
+}
 
 // Returns "" if the scan's geometry is usable, else what is wrong ("LocalizationScan.ranges_m: empty", more
 // than limits::kMaxScanBeams ranges, ...).

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "doorplate_localization/common/geometry2d.h"
+#include "doorplate_localization/sensors/plate_range.h"
 
 namespace doorplate_localization {
 
@@ -19,5 +20,15 @@ struct RangeScan {
 
   double BeamAngle(int i) const { return angle_min_rad + i * angle_increment_rad; }
 };
+
+// The scan's beams as the shared sensor rules read them (no max range: every finite reading is an echo).
+inline BeamGeometry BeamGeometryOf(const RangeScan& scan) {
+  BeamGeometry g;
+  g.angle_min_rad = scan.angle_min_rad;
+  g.angle_increment_rad = scan.angle_increment_rad;
+  g.min_range_m = scan.min_range_m;
+  g.laser_pose = scan.laser_pose;
+  return g;
+}
 
 }  // namespace doorplate_localization
