@@ -225,6 +225,10 @@ ParamTable<O> ValidatorAndTrackerRows() {
                "a track unseen for more processed frames is dropped", r::AtLeast(0)),
       Param<O>("tracker/min_voted_frames", DOORPLATE_PARAM_FIELD(extractor.tracker.min_voted_frames),
                "a plate is reported only with this many frames of valid readings", r::AtLeast(1)),
+      Param<O>("tracker/min_reread_gap_s", DOORPLATE_PARAM_FIELD(extractor.tracker.min_reread_gap_s),
+               "a room reported is not reported again until no reported track of it was seen for this long "
+               "(a robot standing before a plate reads it once; 0: off)",
+               r::NonNegative()),
       Param<O>("tracker/read_every_n_frames", DOORPLATE_PARAM_FIELD(extractor.tracker.read_every_n_frames),
                "reading schedule (`PlateTracker::PlanReadings`): a track is read every n-th frame. Unset, the "
                "schedule follows `~recognizer_type` (`UseReadingScheduleFor`): the slow learned recogniser pays "

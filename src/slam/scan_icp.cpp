@@ -189,6 +189,7 @@ ScanIcpResult AlignScans(const IcpReference& reference, const std::vector<Vec2>&
     Eigen::Matrix3d h_used = h_final;
     if (options.degenerate_min_fraction > 0) {  // no information along a degenerate direction
       const Eigen::MatrixXd p = ConstrainedBasis(h_final, weight, options.degenerate_min_fraction);
+      result.degenerate = p.cols() < 3;
       const Eigen::MatrixXd projector = p * p.transpose();
       h_used = projector * h_final * projector;
     }

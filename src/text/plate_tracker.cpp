@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -32,10 +33,12 @@ PlateTracker::PlateTracker(const PlateTrackerOptions& options) : options_(option
   Require(options.read_every_n_frames >= 1, "read_every_n_frames", "must be >= 1");
   Require(options.max_readings_per_track >= 0, "max_readings_per_track", "must be >= 0 (0: no limit)");
   Require(options.enough_votes >= 0, "enough_votes", "must be >= 0 (0: never enough)");
+  Require(options.min_reread_gap_s >= 0.0, "min_reread_gap_s", "must be >= 0 (0: off)");
 }
 
 void PlateTracker::Reset() {
   tracks_.clear();
+  reported_room_seen_s_.clear();
   has_stamp_ = false;
 }
 
@@ -99,14 +102,19 @@ void PlateTracker::UpdateTrack(Track& track, const PlateObservation& observation
   }
 }
 
+std::string PlateTracker::LeadingRoom(const Track& track) {
+  auto winner = track.votes.begin();
+  for (auto it = track.votes.begin(); it != track.votes.end(); ++it) {
+    if (it->second > winner->second) winner = it;  // ties: the lexicographically first room key
+  }
+  return winner == track.votes.end() ? std::string() : winner->first;
+}
+
 bool PlateTracker::MakeReport(const Track& track, PlateReport* report) const {
   if (track.votes.empty()) return false;
   double total = 0.0;
-  auto winner = track.votes.begin();
-  for (auto it = track.votes.begin(); it != track.votes.end(); ++it) {
-    total += it->second;
-    if (it->second > winner->second) winner = it;  // ties: the lexicographically first room key
-  }
+  for (const auto& [room, votes] : track.votes) total += votes;
+  const auto winner = track.votes.find(LeadingRoom(track));
   // The winning room's most frequent printed form (ties: the lexicographically first), and its frames.
   int winner_frames = 0, printed_frames = 0;
   for (const auto& [printed, frames] : track.vote_frames) {
@@ -176,12 +184,19 @@ std::vector<PlateReport> PlateTracker::Update(const std::vector<PlateObservation
     PlateReport report;
     if (seen[t] && track.crossed && !track.reported && track.voted_frames >= options_.min_voted_frames &&
         MakeReport(track, &report)) {
-      reports.push_back(report);
+      const auto earlier = reported_room_seen_s_.find(LeadingRoom(track));
+      const bool same_pass = earlier != reported_room_seen_s_.end() && options_.min_reread_gap_s > 0.0 &&
+                             stamp_s - earlier->second < options_.min_reread_gap_s;
+      if (!same_pass) reports.push_back(report);
       track.reported = true;
     }
+    if (seen[t] && track.reported) reported_room_seen_s_[LeadingRoom(track)] = stamp_s;
     if (track.missed_frames <= options_.max_missed_frames) kept.push_back(std::move(track));
   }
   tracks_ = std::move(kept);
+  for (auto it = reported_room_seen_s_.begin(); it != reported_room_seen_s_.end();) {
+    it = stamp_s - it->second >= options_.min_reread_gap_s ? reported_room_seen_s_.erase(it) : std::next(it);
+  }
   for (size_t o = 0; o < observations.size(); ++o) {
     if (track_of_observation[o] >= 0) continue;
     Track track;

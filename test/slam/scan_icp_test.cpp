@@ -54,6 +54,7 @@ TEST(ScanIcp, AKnownOffsetInAClosedRoomIsRecovered) {
   EXPECT_GT(r.inlier_fraction, 0.8);
   EXPECT_LT(r.rms_m, 0.01);
   // A room constrains every direction.
+  EXPECT_FALSE(r.degenerate);
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(r.information);
   EXPECT_GT(eig.eigenvalues()(0), 0.0);
 }
@@ -189,6 +190,7 @@ TEST(ScanIcp, AWeakAlongCorridorConstraintIsTreatedAsNone) {
   EXPECT_NEAR(kept.relative.y_m, truth.y_m, 0.005);  // across and in heading: the walls
   EXPECT_NEAR(kept.relative.theta_rad, 0.0, 0.002);
   EXPECT_NEAR(kept.information(0, 0), 0.0, 1e-6 * kept.information(1, 1));
+  EXPECT_TRUE(kept.degenerate);
 
   // Without the test the box drags the estimate back towards "no motion", with confidence.
   const ScanIcpResult dragged = AlignScans(reference, query, truth, plain);

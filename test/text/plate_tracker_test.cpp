@@ -163,6 +163,41 @@ TEST(PlateTracker, AStampGoingBackwardsResetsTheTracks) {
   EXPECT_EQ(reports[0].voted_frame_count, 3);
 }
 
+// A robot stopped with a plate abeam: its box jitters about the centre line, and is lost for more than
+// max_missed_frames frames now and then (frames without a detection), so new tracks keep crossing.
+std::vector<PlateReport> StandBeforeAPlate(PlateTracker& tracker, double seconds, double* t) {
+  std::vector<PlateReport> all;
+  for (int frame = 0; *t < seconds; ++frame, *t += kFrameS) {
+    const bool lost = frame % 10 >= 6;  // 4 frames in 10 without a box
+    const std::vector<PlateObservation> boxes =
+        lost ? std::vector<PlateObservation>{} : std::vector<PlateObservation>{At(frame % 2 ? 330 : 310)};
+    for (const PlateReport& r : tracker.Update(boxes, *t)) all.push_back(r);
+  }
+  return all;
+}
+
+TEST(PlateTracker, ARobotStandingBeforeAPlateWhoseBoxIsLostAndFoundReportsItOnce) {
+  PlateTracker tracker({});
+  double t = 0.0;
+  EXPECT_EQ(StandBeforeAPlate(tracker, 20.0, &t).size(), 1u);
+  PlateTrackerOptions off;
+  off.min_reread_gap_s = 0.0;
+  PlateTracker every_track(off);
+  t = 0.0;
+  EXPECT_GT(StandBeforeAPlate(every_track, 20.0, &t).size(), 5u);  // each new track crossed the line
+}
+
+TEST(PlateTracker, APlatePassedAgainAfterTheRereadGapIsReportedAgain) {
+  PlateTracker tracker({});
+  EXPECT_EQ(Drive(tracker, Steps(560, 60, -40), 0.0).size(), 1u);
+  // Out of view for 3 s (> min_reread_gap_s), then passed the other way: a new pass, a new report.
+  EXPECT_EQ(Drive(tracker, Steps(60, 560, 40), 4.5).size(), 1u);
+  // Lost for 4 frames (its track dropped), back within 1 s of the last sighting: the same pass.
+  for (double t = 5.8; t < 6.2; t += kFrameS) EXPECT_TRUE(tracker.Update({}, t).empty());
+  EXPECT_EQ(tracker.num_tracks(), 0u);
+  EXPECT_TRUE(Drive(tracker, Steps(560, 60, -40), 6.3).empty());
+}
+
 TEST(PlateTracker, BearingIsPositiveLeftOfThePrincipalPoint) {
   PlateTrackerOptions options;
   options.fx_px = 500.0;
@@ -241,6 +276,21 @@ TEST(PlateTracker, PlanningDoesNotChangeTheTracker) {
   const std::vector<bool> plan = tracker.PlanReadings({At(460).box_px, At(100, "", 0.0, 400).box_px}, 0.1);
   EXPECT_EQ(plan, std::vector<bool>({true, true}));
   EXPECT_EQ(tracker.num_tracks(), 1u);
+}
+
+TEST(PlateTracker, RefusesANegativeRereadGapNamingTheField) {
+  PlateTrackerOptions options;
+  options.min_reread_gap_s = -1.0;
+  EXPECT_THROW(
+      {
+        try {
+          PlateTracker tracker(options);
+        } catch (const std::invalid_argument& e) {
+          EXPECT_NE(std::string(e.what()).find("min_reread_gap_s"), std::string::npos) << e.what();
+          throw;
+        }
+      },
+      std::invalid_argument);
 }
 
 TEST(PlateTracker, RefusesABadScheduleNamingTheField) {

@@ -85,6 +85,7 @@ struct ScanIcpResult {
   double inlier_fraction = 0.0;
   double rms_m = 0.0;          // point-to-line residual of the inliers
   int iterations = 0;
+  bool degenerate = false;     // a translation the scans do not fix was kept at the guess (no information)
 };
 
 // Aligns `query` (its own frame) to `reference` starting from `initial` (query frame in reference frame).

@@ -14,7 +14,8 @@
 //    where the front end's poses and where a solve put them (in the order loop_closure_proposal_order
 //    says), afresh at every solve (only the sequential alignments are kept between solves); after each
 //    solve, closures the solution misses by more than `loop_closure_max_residual_sigmas` are dropped as
-//    false matches and the graph is solved again;
+//    false matches and the graph is solved again; last, every closure is aligned again from the solution
+//    (one that no longer aligns is dropped) and the graph solved once more;
 //  - doorplates: each reading is the plate's position in its node's frame (bearing and range, σ
 //    `plate_sigma_m`); a plate read twice is a loop closure, and the odometry edges between the nodes
 //    where adjacent plates were read are the paper's inter-plate distances (eq. 13; eq. 14's sum is
@@ -83,7 +84,8 @@ struct SlamBackEndResult {
   double odometry_scale = 1.0;              // estimated true distance ÷ odometry distance
   int alignment_edges = 0;
   int loop_closures = 0;                    // in the final graph
-  int loop_closures_dropped = 0;            // by the consistency check (loop_closure_max_residual_sigmas)
+  int loop_closures_dropped = 0;            // by the consistency check (loop_closure_max_residual_sigmas) or
+                                            // because they no longer align from the solution
   int plate_readings = 0;
   PoseGraphSummary summary;                 // of the final solve
 };
@@ -137,7 +139,9 @@ class SlamBackEnd {
   bool PlatesCloseALoop() const;
   // Whether an alignment's result lies within sequential_gate_sigmas of the odometry's relative pose.
   bool AgreesWithOdometry(const Pose2D& odometry, const Pose2D& aligned) const;
-  std::optional<PoseEdge> Align(int from, int to, const Pose2D& initial, bool loop_closure) const;
+  // `degenerate` (if given): whether the alignment kept the guess along a direction the scans do not fix.
+  std::optional<PoseEdge> Align(int from, int to, const Pose2D& initial, bool loop_closure,
+                                bool* degenerate = nullptr) const;
 
   const SlamBackEndOptions options_;
   mutable std::vector<Node> nodes_;

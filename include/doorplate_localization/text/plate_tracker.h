@@ -55,6 +55,11 @@ struct PlateTrackerOptions {
   int read_every_n_frames = 1;     // a track is read when this many observed frames passed since its last read
   int max_readings_per_track = 0;  // attempts per track (a distractor that never validates); 0: no limit
   int enough_votes = 0;            // a track whose leading room has this many valid readings is not read again; 0: never
+  // A room reported is not reported again until no reported track of it has been seen for this long: a
+  // robot standing before a plate whose box is lost for a few frames and found again (a new track, jitter
+  // across the centre line) reads it once. A plate passed again later (the way back) is reported again.
+  // 0: off.
+  double min_reread_gap_s = 2.0;
 };
 
 class PlateTracker {
@@ -66,8 +71,9 @@ class PlateTracker {
   // reports once, in the first frame in which it has crossed the centre line AND has at least
   // min_voted_frames valid readings (so a plate read only after crossing reports a few frames late,
   // with that frame's box and bearing). Tracks unseen for more than max_missed_frames are dropped;
-  // one that vanishes before reporting is dropped without a report. A stamp older than the previous
-  // one (bag loop, simulator restart) resets the tracker first.
+  // one that vanishes before reporting is dropped without a report. A track whose room was reported by
+  // a track seen less than min_reread_gap_s ago counts as reported without a report. A stamp older than
+  // the previous one (bag loop, simulator restart) resets the tracker first.
   std::vector<PlateReport> Update(const std::vector<PlateObservation>& observations, double stamp_s);
 
   // Which of this frame's boxes to read, given the tracks so far (the association Update will make):
@@ -102,9 +108,12 @@ class PlateTracker {
   void UpdateTrack(Track& track, const PlateObservation& observation, double stamp_s) const;
   bool MakeReport(const Track& track, PlateReport* report) const;
   bool WantsReading(const Track& track) const;
+  // The room with the most votes of the track (canonical key; ties: the first), "" without votes.
+  static std::string LeadingRoom(const Track& track);
 
   const PlateTrackerOptions options_;
   std::vector<Track> tracks_;
+  std::map<std::string, double> reported_room_seen_s_;  // room → last stamp a reported track of it was seen
   int next_id_ = 1;
   double last_stamp_s_ = 0.0;
   bool has_stamp_ = false;
