@@ -238,8 +238,9 @@ def main():
     sys.stderr.write(('\r\033[K' if tty else '') + p.line(time.monotonic() - start) + '\n')
     with p.lock:
         print(p.texts.get(until_topic, ''))
-        if p.csv:
+        if p.csv:  # under the lock, and forgotten: a particlecloud callback may still run until shutdown
             p.csv.close()
+            p.csv = None
     rospy.signal_shutdown('done')
     return code
 
