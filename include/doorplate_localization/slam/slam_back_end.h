@@ -14,8 +14,9 @@
 //    where the front end's poses and where a solve put them (in the order loop_closure_proposal_order
 //    says), afresh at every solve (only the sequential alignments are kept between solves); after each
 //    solve, closures the solution misses by more than `loop_closure_max_residual_sigmas` are dropped as
-//    false matches and the graph is solved again; last, every closure is aligned again from the solution
-//    (one that no longer aligns is dropped) and the graph solved once more;
+//    false matches and the graph is solved again; last, every closure whose alignment kept its guess along
+//    a direction the scans do not fix is aligned again from the solution (one that no longer aligns is
+//    dropped) and the graph solved once more;
 //  - doorplates: each reading is the plate's position in its node's frame (bearing and range, σ
 //    `plate_sigma_m`); a plate read twice is a loop closure, and the odometry edges between the nodes
 //    where adjacent plates were read are the paper's inter-plate distances (eq. 13; eq. 14's sum is
