@@ -32,8 +32,14 @@ if [ "$inner" = 1 ]; then
     verdict=$(/usr/bin/python3 "$repo/test/viz/count_colors.py" "$out/screen.ppm")
     if [[ "$verdict" == ok* ]]; then break; fi
   done
+  if [[ "$verdict" != ok* ]]; then  # say why: was anything published, did a node complain?
+    for topic in /particlecloud /text_landmarks /amcl/state; do
+      echo "[viz] $topic: $(timeout 5 rostopic info "$topic" 2>&1 | grep -c '^ \* ') publishers/subscribers listed"
+    done
+    echo "[viz] last lines of $out/roslaunch.log:"; tail -n 20 "$out/roslaunch.log"
+  fi
   kill -INT "$launch_pid" 2>/dev/null; wait "$launch_pid" 2>/dev/null
-  echo "[viz] $verdict (screenshot: $out/screen.png)"
+  echo "[viz] $verdict after $((SECONDS - deadline + timeout_s)) s (screenshot: $out/screen.png)"
   convert "$out/screen.ppm" "$out/screen.png" 2>/dev/null
   [[ "$verdict" == ok* ]]
   exit
