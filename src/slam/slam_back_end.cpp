@@ -242,6 +242,14 @@ SlamBackEndResult SlamBackEnd::Optimize() const {
   // look-alike places (two corners, two door recesses) that the rest of the graph (odometry, the plates,
   // the other closures) contradicts. The Huber kernel only bounds each one's pull; a few dozen of them still
   // bend a floor. Dropped, and the graph is rebuilt and solved again, up to loop_closure_check_rounds times.
+  // The graph rebuilt with `kept` as its loop closures (those of `loops` not in it counted as dropped), solved.
+  const auto solve_with_loops = [&](std::vector<PoseEdge> kept) {
+    result.loop_closures_dropped += static_cast<int>(loops.size() - kept.size());
+    loops = std::move(kept);
+    graph = BaseGraph(&landmark_of_plate);
+    for (const PoseEdge& edge : loops) graph.AddEdge(edge);
+    result.summary = graph.Optimize(options_.graph);
+  };
   const double gate = options_.loop_closure_max_residual_sigmas * options_.loop_closure_max_residual_sigmas;
   const auto check_loops = [&] {
     for (int round = 0; round < options_.loop_closure_check_rounds && gate > 0; ++round) {
@@ -250,11 +258,7 @@ SlamBackEndResult SlamBackEnd::Optimize() const {
         if (graph.SquaredResidual(edge) <= gate) kept.push_back(edge);
       }
       if (kept.size() == loops.size()) return;
-      result.loop_closures_dropped += static_cast<int>(loops.size() - kept.size());
-      loops = std::move(kept);
-      graph = BaseGraph(&landmark_of_plate);
-      for (const PoseEdge& edge : loops) graph.AddEdge(edge);
-      result.summary = graph.Optimize(options_.graph);
+      solve_with_loops(std::move(kept));
     }
   };
   // Each closes loops where its poses say, then (if it added any) solves and checks; true if it added any.
@@ -298,11 +302,7 @@ SlamBackEndResult SlamBackEnd::Optimize() const {
         realigned.push_back(*again);
       }
     }
-    result.loop_closures_dropped += static_cast<int>(loops.size() - realigned.size());
-    loops = std::move(realigned);
-    graph = BaseGraph(&landmark_of_plate);
-    for (const PoseEdge& edge : loops) graph.AddEdge(edge);
-    result.summary = graph.Optimize(options_.graph);
+    solve_with_loops(std::move(realigned));
     check_loops();
   }
   result.loop_closures = static_cast<int>(loops.size());
