@@ -12,7 +12,7 @@ install(TARGETS doorplate_mapping_conversions LIBRARY DESTINATION ${CATKIN_PACKA
 add_library(doorplate_mapping_nodelet
   src/ros/slam_mapping_options.cpp
   src/ros/slam_mapping_nodelet.cpp)
-target_include_directories(doorplate_mapping_nodelet PUBLIC include PRIVATE ${catkin_INCLUDE_DIRS})
+target_include_directories(doorplate_mapping_nodelet PUBLIC include PRIVATE src/tools ${catkin_INCLUDE_DIRS})
 target_link_libraries(doorplate_mapping_nodelet doorplate_mapping_conversions doorplate_ros_conversions doorplate_slam
                       doorplate_maps ${catkin_LIBRARIES})
 add_dependencies(doorplate_mapping_nodelet ${PROJECT_NAME}_generate_messages_cpp)
@@ -47,6 +47,16 @@ if(CATKIN_ENABLE_TESTING)
   target_include_directories(slam_mapping_nodelet_rostest PRIVATE src/ros ${catkin_INCLUDE_DIRS})
   target_link_libraries(slam_mapping_nodelet_rostest doorplate_mapping_nodelet ${catkin_LIBRARIES})
   add_dependencies(slam_mapping_nodelet_rostest doorplate_mapping_nodelet doorplate_nodelets)
+
+  # A bag the checker writes, through the nodelet (rosbag play) and doorplate_map_bag: the same result.
+  add_rostest_gtest(slam_mapping_bag_replay_rostest test/ros/slam_mapping_bag_replay.test
+                    test/ros/slam_mapping_bag_replay_rostest.cpp)
+  target_include_directories(slam_mapping_bag_replay_rostest PRIVATE test/sim ${catkin_INCLUDE_DIRS})
+  target_link_libraries(slam_mapping_bag_replay_rostest doorplate_nodelets doorplate_sim doorplate_maps
+                        ${catkin_LIBRARIES})
+  target_compile_definitions(slam_mapping_bag_replay_rostest PRIVATE
+                             DOORPLATE_MAP_BAG="$<TARGET_FILE:doorplate_map_bag>")
+  add_dependencies(slam_mapping_bag_replay_rostest doorplate_map_bag doorplate_mapping_nodelet)
 endif()
 
 # Offline mapping of an MRPT rawlog (e.g. mrpt-common's Málaga Telecom Faculty loop) with the same core; MRPT

@@ -170,6 +170,7 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
   result.sweep_done = explore ? explorer.phase() == ExplorePhase::kDone : sweep.phase() == SweepPhase::kDone;
   result.distance_m = sim.distance_travelled_m();
   result.sim_seconds = sim.time_s();
+  for (const MappingPlateOutcome& o : session.Flush().plates) result.plate_reports_used += o.result.used();  // held
   result.degenerate_scans = session.slam().slam().stats().degenerate_scans;
   result.plate_ranges_from_wall = static_cast<int>(session.counters().plate_ranges_from_wall);
 

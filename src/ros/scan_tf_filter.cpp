@@ -2,6 +2,10 @@
 
 #include <cstdio>
 #include <utility>
+#include <vector>
+
+#include <boost/make_shared.hpp>
+#include <ros/callback_queue_interface.h>
 
 #include "doorplate_localization/common/limits.h"
 #include "doorplate_localization/ros/scan_conversions.h"
@@ -33,19 +37,38 @@ std::optional<ScanPoses> LookupScanPoses(const tf2_ros::Buffer& buffer, const st
   return ScanPoses{*laser_in_base, *base_in_odom};
 }
 
+namespace {
+
+// Check() of a ScanTfFilter, as one callback on its queue.
+class CheckCallback : public ros::CallbackInterface {
+ public:
+  explicit CheckCallback(std::function<void()> check) : check_(std::move(check)) {}
+  CallResult call() override {
+    check_();
+    return Success;
+  }
+
+ private:
+  std::function<void()> check_;
+};
+
+}  // namespace
+
 ScanTfFilter::ScanTfFilter(tf2_ros::Buffer& buffer, const std::string& target_frame, uint32_t queue_size,
                            ros::CallbackQueueInterface* queue, ScanCallback on_scan, DropCallback on_drop)
-    : target_frame_(target_frame),
+    : buffer_(buffer),
+      target_frame_(target_frame),
       queue_size_(queue_size),
-      on_drop_(std::move(on_drop)),
-      filter_(buffer, target_frame, queue_size, queue) {
-  filter_.registerCallback(
-      [on_scan = std::move(on_scan)](const sensor_msgs::LaserScan::ConstPtr& scan) { on_scan(scan); });
-  filter_.registerFailureCallback(
-      [this](const sensor_msgs::LaserScan::ConstPtr& scan, tf2_ros::FilterFailureReason reason) {
-        on_drop_(scan, DescribeScanTfDrop(*scan, target_frame_, queue_size_, reason),
-                 reason == tf2_ros::filter_failure_reasons::EmptyFrameID);
-      });
+      queue_(queue),
+      on_scan_(std::move(on_scan)),
+      on_drop_(std::move(on_drop)) {
+  tf_changed_ = buffer_._addTransformsChangedListener([this] { OnTfChanged(); });
+}
+
+ScanTfFilter::~ScanTfFilter() {
+  buffer_._removeTransformsChangedListener(tf_changed_);  // no new Check() is queued after this
+  if (queue_ != nullptr) queue_->removeByID(reinterpret_cast<uint64_t>(this));
+  subscriber_.reset();
 }
 
 void ScanTfFilter::Subscribe(ros::NodeHandle& nh, const std::string& topic) {
@@ -56,15 +79,74 @@ void ScanTfFilter::Subscribe(ros::NodeHandle& nh, const std::string& topic) {
 }
 
 void ScanTfFilter::OnMessage(const ros::MessageEvent<const sensor_msgs::LaserScan>& event) {
-  const std::string problem = ValidateScan(*event.getConstMessage());
-  if (!problem.empty()) return on_drop_(event.getConstMessage(), problem, /*broken=*/true);
-  filter_.add(event);
+  Add(event.getConstMessage());
 }
 
 void ScanTfFilter::Add(const sensor_msgs::LaserScan::ConstPtr& scan) {
   const std::string problem = ValidateScan(*scan);
   if (!problem.empty()) return on_drop_(scan, problem, /*broken=*/true);
-  filter_.add(scan);
+  sensor_msgs::LaserScan::ConstPtr pushed_out;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    waiting_.push_back(scan);
+    if (queue_size_ != 0 && waiting_.size() > queue_size_) {
+      pushed_out = waiting_.front();
+      waiting_.pop_front();
+    }
+  }
+  if (pushed_out) {
+    on_drop_(pushed_out, DescribeScanTfDrop(*pushed_out, target_frame_, queue_size_, tf2_ros::filter_failure_reasons::Unknown),
+             false);
+  }
+  Check();
+}
+
+void ScanTfFilter::OnTfChanged() {
+  if (queue_ == nullptr) return Check();
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (waiting_.empty()) return;
+  }
+  if (check_queued_.exchange(true)) return;  // one queued Check() serves every change before it runs
+  queue_->addCallback(boost::make_shared<CheckCallback>([this] {
+                        check_queued_ = false;
+                        Check();
+                      }),
+                      reinterpret_cast<uint64_t>(this));
+}
+
+void ScanTfFilter::Check() {
+  // (scan, ready) in arrival order; ready false: dropped, older than tf's cache holds.
+  std::vector<std::pair<sensor_msgs::LaserScan::ConstPtr, bool>> decided;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (auto it = waiting_.begin(); it != waiting_.end();) {
+      const sensor_msgs::LaserScan& scan = **it;
+      bool ready = buffer_.canTransform(target_frame_, scan.header.frame_id, scan.header.stamp);
+      bool too_old = false;
+      if (!ready) {
+        try {  // as tf2's own rule: a stamp more than the cache length before tf's newest data never comes
+          const ros::Time latest = buffer_.lookupTransform(target_frame_, scan.header.frame_id, ros::Time(0)).header.stamp;
+          too_old = !latest.isZero() && scan.header.stamp + buffer_.getCacheLength() < latest;
+        } catch (const tf2::TransformException&) {  // frames not (yet) connected: wait
+        }
+      }
+      if (ready || too_old) {
+        decided.emplace_back(*it, ready);
+        it = waiting_.erase(it);
+      } else {
+        ++it;
+      }
+    }
+  }
+  for (const auto& [scan, ready] : decided) {
+    if (ready) {
+      on_scan_(scan);
+    } else {
+      on_drop_(scan, DescribeScanTfDrop(*scan, target_frame_, queue_size_, tf2_ros::filter_failure_reasons::OutTheBack),
+               false);
+    }
+  }
 }
 
 }  // namespace doorplate_localization

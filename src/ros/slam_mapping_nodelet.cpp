@@ -6,8 +6,10 @@
 // ScanTfFilter (scan_tf_filter.h, the localizer's too) until odom -> scan frame is known at its stamp; the
 // laser's mounting comes from tf base_frame -> scan frame) and, with ~use_text,
 // text_detections (doorplate_localization/TextDetectionArray; detections at the image-centre crossing with
-// a text; bearing composed with the camera's optical axis in base_frame from tf; a plate read before the
-// scans near its stamp arrived waits in the session for them).
+// a text; bearing composed with the camera's optical axis in base_frame from tf). Every array, empty ones
+// too, says how far the camera got: with ~camera_wait_s > 0 a scan waits in the session until the arrays
+// reached its stamp (at most that long), so scans and plates reach the filter in stamp order whatever
+// order the callbacks run in (a replayed bag maps as doorplate_map_bag maps it).
 // Publishes map (nav_msgs/OccupancyGrid, latched) and map_metadata (latched) whenever the session solved
 // (every map_update_interval of scan time), ~entropy (std_msgs/Float64, gmapping's pose entropy) per
 // processed scan, text_landmarks (visualization_msgs/MarkerArray, latched) when the landmarks change, and
@@ -18,8 +20,9 @@
 // exception until it takes a scan again; scans dropped and why, particles, landmarks, plates, the map
 // (slam_conversions.h's ToMapperDiagnosticStatus).
 // Services: dynamic_map (nav_msgs/GetMap, the last published map) and ~save_maps (std_srvs/Trigger:
-// <map_output_dir>/<map_name>.pgm + .yaml (map_server) and .text_map.yaml, atomically); the maps are also
-// saved when the nodelet shuts down. Parameters: slam_mapping_options.h, docs/parameters.md.
+// <map_output_dir>/<map_name>.pgm + .yaml (map_server), .text_map.yaml and .trajectory.txt (`scan_index x y
+// theta` per processed scan, the posterior mean path, as doorplate_map_bag writes it), atomically); the
+// maps are also saved when the nodelet shuts down, after the scans and plates still waiting for the camera. Parameters: slam_mapping_options.h, docs/parameters.md.
 // Bad input (broken scans, missing tf, stamps going backwards, unusable detections) is dropped with a
 // throttled warning naming the topic; the nodelet keeps running.
 // Threading: callbacks run on the nodelet's single-threaded queue (tf filter included); mutex_ also
@@ -58,6 +61,7 @@
 #include "doorplate_localization/ros/slam_conversions.h"
 #include "doorplate_localization/ros/text_detection_conversions.h"
 #include "doorplate_localization/slam/mapping_session.h"
+#include "map_tool_output.h"  // src/tools: the trajectory file the offline tools write too
 #include "scan_tf_filter.h"
 #include "slam_mapping_options.h"
 
@@ -69,6 +73,7 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     std::lock_guard<std::mutex> lock(mutex_);
     if (!session_ || !options_.save_on_shutdown || !session_->started()) return;
     std::string message;
+    session_->Flush();  // the scans and plates still waiting for the camera: the input has ended
     SaveMaps(&message);  // the message says whether it worked; printed without ROS (it may be shutting down)
     std::fprintf(stderr, "[slam_mapping] at shutdown: %s\n", message.c_str());
   }
@@ -170,26 +175,46 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     ++scans_since_health_;
     error_.clear();
     last_drop_.clear();
-    if (NotePlates(update.plates)) PublishLandmarks(stamp);  // sightings that waited for this scan
-    if (!update.scan_processed) return;
+    if (NotePlates(update.plates)) PublishLandmarks(stamp);  // sightings that waited for a scan after them
+    if (update.scan_processed) PublishAfterScans(update, stamp);
+  }
+
+  // After the filter processed a scan (this call's, or ones that waited for the camera): entropy, the map.
+  void PublishAfterScans(const MappingUpdate& update, const ros::Time& stamp) {
     std_msgs::Float64 entropy;
     entropy.data = PoseEntropy(session_->slam().slam().particles());
     entropy_pub_.publish(entropy);
     if (update.solved) PublishMap(stamp);
   }
 
+  // Every array, empty or not, tells the session how far the camera got (it orders scans and plates by stamp).
   void OnDetections(const TextDetectionArray::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (msg->detections.empty()) return;
     const ros::Time stamp = msg->header.stamp;
+    bool changed = false;
+    try {  // the camera's progress first (the sightings of this stamp wait for a later scan either way)
+      const MappingUpdate update = session_->AddPlates(stamp.toSec(), Pose2D{}, {});
+      changed = NotePlates(update.plates);
+      if (update.scan_processed) PublishAfterScans(update, stamp);
+    } catch (const std::invalid_argument& e) {  // a non-finite stamp
+      NODELET_WARN_THROTTLE(5.0, "%s: %s; dropping it", detections_topic_.c_str(), e.what());
+      return;
+    }
+    if (!msg->detections.empty()) changed = AddDetections(*msg) || changed;
+    if (changed) PublishLandmarks(stamp);
+  }
+
+  // The array's sightings to the session; true when one was used (the landmarks changed).
+  bool AddDetections(const TextDetectionArray& msg) {
+    const ros::Time stamp = msg.header.stamp;
     std::vector<PlateSighting> sightings;
     std::vector<std::string> rejected;
     Pose2D odom_pose;
-    const std::string problem = PrepareSlamSightings(*msg, lookup_, frames_, &sightings, &odom_pose, &rejected);
+    const std::string problem = PrepareSlamSightings(msg, lookup_, frames_, &sightings, &odom_pose, &rejected);
     if (!problem.empty()) {
       NODELET_WARN_THROTTLE(5.0, "%s: %s; dropping %zu detections", detections_topic_.c_str(), problem.c_str(),
-                            msg->detections.size());
-      return;
+                            msg.detections.size());
+      return false;
     }
     for (const std::string& r : rejected) {
       NODELET_WARN_THROTTLE(5.0, "%s: detection %s; dropping it", detections_topic_.c_str(), r.c_str());
@@ -208,7 +233,7 @@ class SlamMappingNodelet : public nodelet::Nodelet {
                               sighting.text.c_str(), e.what());
       }
     }
-    if (changed) PublishLandmarks(stamp);
+    return changed;
   }
 
   // Logs and counts the session's plate outcomes; true when one was used (the landmarks changed).
@@ -321,8 +346,9 @@ class SlamMappingNodelet : public nodelet::Nodelet {
       TextMap text_map = MapFrame(session_->GetTextMap());
       text_map.occupancy_map = options_.map_name + ".yaml";
       SaveTextMap(text_map, base + ".text_map.yaml");
-      *message = "saved " + base + ".pgm, " + base + ".yaml and " + base + ".text_map.yaml (" +
-                 std::to_string(text_map.landmarks.size()) + " plates)";
+      tools::WriteTrajectory(session_->slam().slam().MeanTrajectory(), base + ".trajectory.txt");
+      *message = "saved " + base + ".pgm, " + base + ".yaml, " + base + ".text_map.yaml (" +
+                 std::to_string(text_map.landmarks.size()) + " plates) and " + base + ".trajectory.txt";
       return true;
     } catch (const std::exception& e) {
       *message = std::string("cannot save the maps: ") + e.what();

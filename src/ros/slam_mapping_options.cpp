@@ -63,6 +63,7 @@ MappingSessionOptions ToMappingSessionOptions(const SlamMappingNodeOptions& o) {
   session.throttle_scans = o.throttle_scans;
   session.temporal_update_s = o.temporal_update_s;
   session.map_update_interval_s = o.map_update_interval_s;
+  session.camera_wait_s = o.use_text ? o.camera_wait_s : 0.0;  // nothing to wait for without the detections
   return session;
 }
 
@@ -118,6 +119,11 @@ const ParamTable<O>& SlamMappingParamTable() {
             [](O& o, int seed) { o.slam.slam.seed = static_cast<std::uint64_t>(seed); },
             "(ours) the filter's random seed", r::AtLeast(0)),
         Param<O>("use_text", DOORPLATE_PARAM_FIELD(use_text), "(ours) subscribe `text_detections` and map the plates"),
+        Param<O>("camera_wait_s", DOORPLATE_PARAM_FIELD(camera_wait_s),
+                 "(ours, with use_text) a scan waits until the text extractor's arrays (empty ones too) reached its "
+                 "stamp, at most this long (scan stamps): scans and plates reach the filter in stamp order "
+                 "whatever order they arrive in, so a replayed bag maps as doorplate_map_bag maps it; 0: no waiting",
+                 r::Holds("in [0, 60] seconds", [](double v) { return v >= 0.0 && v <= 60.0; })),
         Param<O>("room_pattern", DOORPLATE_PARAM_FIELD(slam.room_pattern),
                  "(ours) the building's room identifier format, an ECMAScript regex (the text extractor's "
                  "parameter of the same name): plates whose canonical text does not fit are not mapped; written "

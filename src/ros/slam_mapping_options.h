@@ -43,6 +43,8 @@ struct SlamMappingNodeOptions {
   int min_valid_beams = 10;                 // ~min_valid_beams: scans with fewer finite returns are dropped
   double tf_timeout_s = 0.2;                // ~tf_timeout_s: wait this long for a tf (scans, detections)
   bool use_text = true;                     // ~use_text: subscribe text_detections and map plates
+  double camera_wait_s = kDefaultCameraWaitS;  // ~camera_wait_s: scans wait this long at most for the camera's arrays
+                                            // (MappingSessionOptions::camera_wait_s; 0 without use_text)
   std::string map_output_dir;               // ~map_output_dir: "" = $ROS_HOME/doorplate_maps (~/.ros/...)
   std::string map_name = "map";             // ~map_name: <dir>/<name>.pgm, .yaml, .text_map.yaml
   bool save_on_shutdown = true;             // ~save_on_shutdown
@@ -50,7 +52,7 @@ struct SlamMappingNodeOptions {
 };
 
 // The mapping session's options from the node's (slam, throttle_scans, temporal_update_s,
-// map_update_interval_s; the session's own defaults for the rest).
+// map_update_interval_s, camera_wait_s if use_text; the session's own defaults for the rest).
 MappingSessionOptions ToMappingSessionOptions(const SlamMappingNodeOptions& options);
 
 // Every parameter of the table: name, field, default, rule, doc line.

@@ -30,6 +30,10 @@ void ValidateMappingSessionOptions(const MappingSessionOptions& o) {
     fail("plate_range_max_scan_age_s: must be finite and >= 0");
   }
   if (!(o.scan_history_s >= 0) || !std::isfinite(o.scan_history_s)) fail("scan_history_s: must be finite and >= 0");
+  if (!(o.camera_wait_s >= 0 && o.camera_wait_s <= 60)) {
+    fail("camera_wait_s: must be in [0, 60] seconds (0: scans do not wait for the camera), got " +
+         std::to_string(o.camera_wait_s));
+  }
 }
 
 MappingSession::MappingSession(const MappingSessionOptions& options)
@@ -47,34 +51,83 @@ MappingUpdate MappingSession::AddScan(double stamp_s, const Pose2D& base_in_odom
   ++counters_.scans;
   const int index = scan_calls_++;
   if (index % options_.throttle_scans != 0) return update;  // gmapping's throttle_scans: every call counts
-  if (last_scan_stamp_s_ && stamp_s <= *last_scan_stamp_s_) {
+  const std::string refused = Ordering() ? RefuseOrderedScan(stamp_s) : RefuseScan(stamp_s);
+  if (!refused.empty()) {
     ++counters_.scans_refused;
-    update.scan_refused_reason = "stamp " + std::to_string(stamp_s) + " s is not after the previous scan's " +
-                                 std::to_string(*last_scan_stamp_s_) + " s (time went backwards?)";
+    update.scan_refused_reason = refused;
     return update;
   }
-  const bool temporal = options_.temporal_update_s > 0 && last_processed_stamp_s_ &&
-                        stamp_s - *last_processed_stamp_s_ >= options_.temporal_update_s;
-  update.scan_processed = slam_.AddScan(scan, base_in_odom, index, temporal);
   update.scan_taken = true;
-  last_scan_stamp_s_ = stamp_s;
-  scans_.push_back({stamp_s, scan});
-  while (scans_.size() > 1 && scans_.front().stamp_s < stamp_s - options_.scan_history_s) scans_.pop_front();
-  if (update.scan_processed) {
-    ++counters_.scans_processed;
-    last_processed_stamp_s_ = stamp_s;
-    processed_scan_indices_.push_back(index);
-    if (options_.map_update_interval_s > 0 &&
-        (!last_solve_stamp_s_ || stamp_s - *last_solve_stamp_s_ >= options_.map_update_interval_s)) {
-      const MappingUpdate solved = Solve();
-      update.solved = solved.solved;
-    }
+  last_scan_stamp_s_ = std::max(stamp_s, last_scan_stamp_s_.value_or(stamp_s));
+  const auto later = [stamp_s](const auto& s) { return s.stamp_s > stamp_s; };  // stamp order, also when late
+  scans_.insert(std::find_if(scans_.begin(), scans_.end(), later), TimedScan{stamp_s, scan});
+  while (scans_.size() > 1 && scans_.front().stamp_s < *last_scan_stamp_s_ - options_.scan_history_s) scans_.pop_front();
+  if (Ordering()) {
+    waiting_.insert(std::find_if(waiting_.begin(), waiting_.end(), later), WaitingScan{stamp_s, base_in_odom, -1, scan});
+    SendWaitingScans(/*flush=*/false, &update);
+  } else {
+    ProcessScan({stamp_s, base_in_odom, index, scan}, &update);
+    // Held sightings this scan decides: a scan at or after their stamp has now arrived.
+    ApplyHeldBefore(std::nextafter(stamp_s, HUGE_VAL), &update);
   }
-  // Held sightings this scan decides: a scan at or after their stamp has now arrived. Applied in stamp order
-  // (their arrival order is kept among equal stamps).
+  if (update.scan_processed || !update.plates.empty()) RefreshMapToOdom(&update);
+  return update;
+}
+
+std::string MappingSession::RefuseScan(double stamp_s) const {
+  if (!last_scan_stamp_s_ || stamp_s > *last_scan_stamp_s_) return "";
+  return "stamp " + std::to_string(stamp_s) + " s is not after the previous scan's " +
+         std::to_string(*last_scan_stamp_s_) + " s (time went backwards?)";
+}
+
+std::string MappingSession::RefuseOrderedScan(double stamp_s) const {
+  if (last_sent_stamp_s_ && stamp_s <= *last_sent_stamp_s_) {
+    return "stamp " + std::to_string(stamp_s) + " s is not after the last scan mapped, " +
+           std::to_string(*last_sent_stamp_s_) + " s (more than camera_wait_s late, or time went backwards?)";
+  }
+  for (const WaitingScan& w : waiting_) {
+    if (w.stamp_s == stamp_s) return "stamp " + std::to_string(stamp_s) + " s: a scan of that stamp was given already";
+  }
+  return "";
+}
+
+void MappingSession::ProcessScan(const WaitingScan& taken, MappingUpdate* update) {
+  const bool temporal = options_.temporal_update_s > 0 && last_processed_stamp_s_ &&
+                        taken.stamp_s - *last_processed_stamp_s_ >= options_.temporal_update_s;
+  const bool processed = slam_.AddScan(taken.scan, taken.base_in_odom, taken.index, temporal);
+  last_sent_stamp_s_ = taken.stamp_s;
+  if (!processed) return;
+  update->scan_processed = true;
+  ++counters_.scans_processed;
+  last_processed_stamp_s_ = taken.stamp_s;
+  processed_scan_indices_.push_back(taken.index);
+  if (options_.map_update_interval_s > 0 &&
+      (!last_solve_stamp_s_ || taken.stamp_s - *last_solve_stamp_s_ >= options_.map_update_interval_s)) {
+    update->solved = Solve().solved || update->solved;
+  }
+}
+
+void MappingSession::SendWaitingScans(bool flush, MappingUpdate* update) {
+  while (!waiting_.empty()) {
+    const WaitingScan& next = waiting_.front();
+    const bool reported = camera_stamp_s_ && *camera_stamp_s_ >= next.stamp_s;
+    const bool expired = *last_scan_stamp_s_ - next.stamp_s >= options_.camera_wait_s ||
+                         waiting_.size() > kMaxWaitingScans;
+    if (!flush && !reported && !expired) return;
+    if (!reported && expired) ++counters_.scans_camera_wait_expired;
+    ApplyHeldBefore(next.stamp_s, update);
+    WaitingScan taken = std::move(waiting_.front());
+    waiting_.pop_front();
+    taken.index = ordered_index_++;
+    ProcessScan(taken, update);
+  }
+}
+
+void MappingSession::ApplyHeldBefore(std::optional<double> stamp_s, MappingUpdate* update) {
+  // Stamp order; among equal stamps, the order of arrival.
   std::vector<HeldPlate> due;
   for (auto it = held_.begin(); it != held_.end();) {
-    if (it->stamp_s <= stamp_s) {
+    if (!stamp_s || it->stamp_s < *stamp_s) {
       due.push_back(std::move(*it));
       it = held_.erase(it);
     } else {
@@ -82,8 +135,14 @@ MappingUpdate MappingSession::AddScan(double stamp_s, const Pose2D& base_in_odom
     }
   }
   std::stable_sort(due.begin(), due.end(), [](const HeldPlate& a, const HeldPlate& b) { return a.stamp_s < b.stamp_s; });
-  for (const HeldPlate& h : due) ApplyPlate(h.stamp_s, h.base_in_odom, h.sighting, &update);
-  if (update.scan_processed || !due.empty()) RefreshMapToOdom(&update);
+  for (const HeldPlate& h : due) ApplyPlate(h.stamp_s, h.base_in_odom, h.sighting, update);
+}
+
+MappingUpdate MappingSession::Flush() {
+  MappingUpdate update;
+  SendWaitingScans(/*flush=*/true, &update);
+  ApplyHeldBefore(std::nullopt, &update);
+  if (update.scan_processed || !update.plates.empty()) RefreshMapToOdom(&update);
   return update;
 }
 
@@ -126,9 +185,12 @@ MappingUpdate MappingSession::AddPlates(double stamp_s, const Pose2D& base_in_od
   for (const PlateSighting& s : sightings) ValidatePlateSighting(s);  // all or nothing
   MappingUpdate update;
   bool used = false;
+  if (Ordering()) camera_stamp_s_ = std::max(stamp_s, camera_stamp_s_.value_or(stamp_s));
   for (const PlateSighting& given : sightings) {
     ++counters_.plate_sightings;
-    if (!given.range_m && ScanMayStillCome(stamp_s)) {
+    const bool late = Ordering() && last_sent_stamp_s_ && stamp_s < *last_sent_stamp_s_;
+    if (late) ++counters_.plates_late;
+    if (Ordering() ? !late : !given.range_m && ScanMayStillCome(stamp_s)) {
       if (held_.size() >= kMaxHeldPlates) {  // bounded: the oldest waits no longer
         const HeldPlate oldest = held_.front();
         held_.pop_front();
@@ -141,7 +203,8 @@ MappingUpdate MappingSession::AddPlates(double stamp_s, const Pose2D& base_in_od
     }
     used = ApplyPlate(stamp_s, base_in_odom, given, &update) || used;
   }
-  if (used) RefreshMapToOdom(&update);
+  if (Ordering()) SendWaitingScans(/*flush=*/false, &update);
+  if (used || update.scan_processed || !update.plates.empty()) RefreshMapToOdom(&update);
   return update;
 }
 

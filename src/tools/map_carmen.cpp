@@ -154,6 +154,7 @@ int Run(const Args& args) {
     }
   }
   progress.Finish();
+  session.Flush();  // nothing waits here (no camera), but every loop ends this way
   session.Solve();  // the back end (slam), and the map
   std::vector<dl::TrajectoryPoint> trajectory;
   if (args.laser_only) {

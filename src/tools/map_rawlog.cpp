@@ -157,6 +157,7 @@ int Run(const Args& args) {
   }
   progress.Finish();
   if (filter.stats().scans_processed == 0) throw std::runtime_error(args.rawlog + ": no 2D range scan");
+  session.Flush();  // nothing waits here (no camera), but every loop ends this way
   session.Solve();  // the back end, and the map rendered at its poses
   // Nothing is written unless the run made a map and a finite trajectory (an older result stays).
   const dl::OccupancyGrid& grid = *session.Map();

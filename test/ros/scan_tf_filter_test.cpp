@@ -3,6 +3,7 @@
 #include "scan_tf_filter.h"
 
 #include <gtest/gtest.h>
+#include <ros/callback_queue.h>
 
 #include <cmath>
 #include <string>
@@ -69,6 +70,30 @@ TEST_F(ScanTfFilterTest, HoldsAScanUntilTfHasTheOdometryAtItsStampThenHandsItOn)
   ASSERT_TRUE(poses.has_value()) << problem;
   EXPECT_NEAR(poses->laser_in_base.x_m, 0.2, 1e-9);
   EXPECT_NEAR(poses->base_in_odom.x_m, 0.05, 1e-9);
+}
+
+// A nodelet's filter: tf changes arrive on the listener's thread and the waiting scans are checked on the
+// nodelet's queue, in the order they came (one queued check for many changes).
+TEST_F(ScanTfFilterTest, OnANodeletsQueueWaitingScansGoOnWhenTheQueueRunsInArrivalOrder) {
+  Add(Pose2D{0.0, 0.0, 0.0}, "odom", "base_link", 10.0);
+  ros::CallbackQueue queue;
+  ScanTfFilter filter(
+      buffer_, "odom", kScanTfQueueSize, &queue,
+      [this](const sensor_msgs::LaserScan::ConstPtr& s) { delivered_.push_back(s->header.stamp.toSec()); },
+      [this](const sensor_msgs::LaserScan::ConstPtr& s, const std::string& problem, bool broken) {
+        drops_.push_back({s->header.stamp.toSec(), problem, broken});
+      });
+  filter.Add(Scan(10.1));
+  filter.Add(Scan(10.2));
+  filter.Add(Scan(10.3));
+  EXPECT_TRUE(delivered_.empty());
+  Add(Pose2D{0.1, 0.0, 0.0}, "odom", "base_link", 10.2);
+  Add(Pose2D{0.2, 0.0, 0.0}, "odom", "base_link", 10.4);
+  EXPECT_TRUE(delivered_.empty());  // not on the tf thread
+  queue.callAvailable();
+  EXPECT_EQ(delivered_, (std::vector<double>{10.1, 10.2, 10.3}));
+  EXPECT_TRUE(queue.isEmpty());
+  EXPECT_TRUE(drops_.empty());
 }
 
 TEST_F(ScanTfFilterTest, RefusesABrokenScanAtOnceWithValidateScansWords) {

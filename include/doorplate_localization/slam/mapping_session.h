@@ -16,6 +16,21 @@
 //    the last processed scan (gmapping's linearUpdate / angularUpdate; the filter sees every such scan, so
 //    its motion noise grows with each odometry increment), or, with temporal_update_s > 0, once that long
 //    passed since the last processed scan (gmapping's temporalUpdate).
+//  - Stamp order (camera_wait_s > 0, the nodelet's and the offline tools' setting): the filter's weights
+//    and random draws follow the order in which scans and sightings reach it, so the session puts them in
+//    stamp order, whatever order they arrived in (live: an OCR report arrives after newer scans; a bag
+//    replayed: the callbacks interleave by timing). A taken scan waits until the camera has reported up to
+//    its stamp (every AddPlates call, also one with no sightings, says the camera got that far: the
+//    extractor publishes an array, empty or not, for every image, in image order), or until the newest
+//    scan given is camera_wait_s newer than it (the camera is off or stalled: the scan goes on without
+//    waiting, counted in scans_camera_wait_expired). A sighting is applied just before the first scan
+//    stamped after it goes to the filter; one stamped before a scan that already went (it came later than
+//    camera_wait_s) is applied at once (counted in plates_late). Flush() sends everything still waiting
+//    (the end of a log). With the same seed and the same messages the result is then the same however the
+//    calls interleave, as long as no report is later than camera_wait_s. Scans may come out of order too (a
+//    tf filter hands on the one whose odometry came first): a late scan waits in its stamp's place; one
+//    stamped at or before a scan already given to the filter is refused. camera_wait_s = 0 (doorplate_eval,
+//    which calls in stamp order): scans go to the filter when given, sightings as below.
 //  - Plate sightings (AddPlates) carry the odometry at their own stamp (tf at the detection's stamp, the
 //    simulator's odometry) and are applied when they arrive, tied to the last processed scan by the
 //    odometry between the two (either way in time: a sighting the OCR delivers after newer scans is placed
@@ -55,6 +70,10 @@
 
 namespace doorplate_localization {
 
+// camera_wait_s of the mapping nodelet and doorplate_map_bag (scan stamps): the demo's recorded reports
+// came up to 3.5 s after their image (the simulator at 5x on a loaded 2-core machine).
+constexpr double kDefaultCameraWaitS = 5.0;
+
 struct MappingSessionOptions {
   TextSlamOptions slam;                      // the filter (linear/angular update thresholds), plates, back end
   int throttle_scans = 1;                    // use every n-th scan given (gmapping's throttle_scans), >= 1
@@ -64,6 +83,8 @@ struct MappingSessionOptions {
   double plate_range_max_scan_age_s = 0.5;   // range from a scan at most this far in time from the sighting
   double scan_history_s = 10.0;              // scans kept this long (newest's stamp) for late sightings' ranges
                                              // (an OCR report arrives seconds after its image on a busy machine)
+  double camera_wait_s = 0.0;                // > 0: scans wait for the camera's reports up to their stamp, at
+                                             // most this long (scan stamps), [0, 60]; 0: no waiting (see above)
 };
 
 // Throws std::invalid_argument naming the field ("MappingSessionOptions.throttle_scans ...", or
@@ -80,7 +101,9 @@ struct MappingPlateOutcome {
 // What one AddScan / AddPlates / Solve call did.
 struct MappingUpdate {
   bool scan_taken = false;          // AddScan: the scan was accepted (stamp in order, not throttled away)
-  bool scan_processed = false;      // AddScan: the filter processed it (a new trajectory pose / graph node)
+  bool scan_processed = false;      // the filter processed a scan in this call (a new trajectory pose / graph
+                                    // node): AddScan's own, or with camera_wait_s > 0 any waiting one (also
+                                    // in AddPlates and Flush)
   std::string scan_refused_reason;  // AddScan: why it was refused ("" when taken or throttled)
   std::vector<MappingPlateOutcome> plates;  // sightings applied by this call (AddScan: held ones), stamp order
   int plates_held = 0;              // AddPlates: sightings held for a scan near their stamp (see the rules)
@@ -92,8 +115,10 @@ struct MappingSessionCounters {
   long long scans = 0;              // AddScan calls
   long long scans_refused = 0;      // stamp not after the previous scan's
   long long scans_processed = 0;
+  long long scans_camera_wait_expired = 0;  // camera_wait_s > 0: sent on without the camera's reports up to them
   long long plate_sightings = 0;    // given to AddPlates
   long long plates_held = 0;        // held for a scan near their stamp (applied later, or still waiting)
+  long long plates_late = 0;        // camera_wait_s > 0: stamped before a scan the filter already had
   long long plates_used = 0;        // TextSlamPlateResult::used
   long long plate_ranges_from_wall = 0;  // ranges taken from the wall line (something stood before the plate)
   long long solves = 0;
@@ -102,6 +127,7 @@ struct MappingSessionCounters {
 class MappingSession {
  public:
   static constexpr std::size_t kMaxHeldPlates = 256;  // sightings waiting for a scan near their stamp
+  static constexpr std::size_t kMaxWaitingScans = 4096;  // scans waiting for the camera; beyond, the oldest goes
 
   // Throws std::invalid_argument naming the field of a bad option.
   explicit MappingSession(const MappingSessionOptions& options);
@@ -110,10 +136,15 @@ class MappingSession {
   // stamp. Throws std::invalid_argument for a bad
   // scan geometry or a non-finite pose (ValidateScan, TextSlam::AddScan; nothing changed).
   MappingUpdate AddScan(double stamp_s, const Pose2D& base_in_odom, const RangeScan& scan);
-  // Plate sightings made at `stamp_s`, with the odometry at that stamp. Throws std::invalid_argument
+  // Plate sightings made at `stamp_s`, with the odometry at that stamp; with no sightings, the camera's
+  // progress (camera_wait_s > 0: it has reported every image up to stamp_s). Throws std::invalid_argument
   // (naming the field, "PlateSighting.bearing_rad ...") for a malformed sighting or a non-finite stamp or
   // pose; nothing of the call is kept then.
   MappingUpdate AddPlates(double stamp_s, const Pose2D& base_in_odom, const std::vector<PlateSighting>& sightings);
+  // The end of the input: every scan waiting for the camera goes to the filter and every held sighting is
+  // applied, in stamp order (a held sighting without a scan near its stamp gets kNoRange). Call before the
+  // last Solve() of a log; the nodelet calls it when it shuts down.
+  MappingUpdate Flush();
   // Solves the back end (TextSlam::Solve), rebuilds Map() and GetTextMap() and recomputes MapToOdom(). Before the first processed scan it does nothing (solved stays false).
   MappingUpdate Solve();
 
@@ -123,7 +154,7 @@ class MappingSession {
   const std::optional<OccupancyGrid>& Map() const { return map_; }
   const TextMap& GetTextMap() const { return text_map_; }
   // base_link in map per processed scan (TextSlam::Trajectory), and the index of each such scan among the
-  // AddScan calls (0-based).
+  // AddScan calls (0-based; with camera_wait_s > 0 among the scans taken, in stamp order).
   std::vector<Pose2D> Trajectory() const { return slam_.Trajectory(); }
   const std::vector<int>& processed_scan_indices() const { return processed_scan_indices_; }
   const std::optional<SlamBackEndResult>& BackEndResult() const { return slam_.BackEndResult(); }
@@ -137,6 +168,8 @@ class MappingSession {
   const MappingSessionCounters& counters() const { return counters_; }
   // Sightings held for a scan near their stamp (not yet applied).
   std::size_t held_plates() const { return held_.size(); }
+  // Scans taken but waiting for the camera (camera_wait_s > 0).
+  std::size_t waiting_scans() const { return waiting_.size(); }
   const MappingSessionOptions& options() const { return options_; }
 
  private:
@@ -149,6 +182,24 @@ class MappingSession {
     Pose2D base_in_odom;
     PlateSighting sighting;
   };
+  struct WaitingScan {
+    double stamp_s;
+    Pose2D base_in_odom;
+    int index;  // among the AddScan calls; with camera_wait_s > 0 among the scans taken, in stamp order
+    RangeScan scan;
+  };
+  bool Ordering() const { return options_.camera_wait_s > 0; }
+  // Why a scan of `stamp_s` is refused ("" if not): not after the previous one; with camera_wait_s > 0, not
+  // after the last one given to the filter, or the stamp of one waiting (a late scan waits in its place).
+  std::string RefuseScan(double stamp_s) const;
+  std::string RefuseOrderedScan(double stamp_s) const;
+  // The filter's update with a taken scan, then the solve rule.
+  void ProcessScan(const WaitingScan& taken, MappingUpdate* update);
+  // camera_wait_s > 0: sends on every waiting scan the camera has reported up to (all with `flush`), each
+  // after the held sightings stamped before it.
+  void SendWaitingScans(bool flush, MappingUpdate* update);
+  // Applies the held sightings stamped before `stamp_s` (all with nullopt), in stamp order.
+  void ApplyHeldBefore(std::optional<double> stamp_s, MappingUpdate* update);
   // nullopt with *why set (which of the two rules failed, with the stamps) when there is no range.
   std::optional<double> RangeFor(double stamp_s, double bearing_rad, std::string* why);
   // True when a scan nearer in time to `stamp_s` may still arrive: none within the age limit, none newer.
@@ -161,9 +212,13 @@ class MappingSession {
   TextSlam slam_;
   std::deque<HeldPlate> held_;             // waiting for a scan near their stamp, arrival order
   std::deque<TimedScan> scans_;            // received scans within scan_history_s of the newest, newest last
+  std::deque<WaitingScan> waiting_;        // camera_wait_s > 0: taken, not yet given to the filter (stamp order)
+  std::optional<double> camera_stamp_s_;   // the newest AddPlates stamp (the camera reported up to it)
+  std::optional<double> last_sent_stamp_s_;  // the newest scan given to the filter
   std::optional<double> last_scan_stamp_s_;
   std::optional<double> last_processed_stamp_s_, last_solve_stamp_s_;  // scan stamps
   int scan_calls_ = 0;
+  int ordered_index_ = 0;                  // camera_wait_s > 0: scans given to the filter so far
   std::vector<int> processed_scan_indices_;
   std::optional<OccupancyGrid> map_;
   TextMap text_map_;

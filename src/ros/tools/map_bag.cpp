@@ -53,7 +53,11 @@ struct Args {
   bool no_text = false;
   double progress_s = 5.0;
   dl::SlamInputFrames frames;
-  dl::MappingSessionOptions options;
+  dl::MappingSessionOptions options = [] {
+    dl::MappingSessionOptions o;
+    o.camera_wait_s = dl::kDefaultCameraWaitS;  // the nodelet's: scans and plates in stamp order
+    return o;
+  }();
 };
 
 std::string Topic(const std::string& name) { return name.empty() || name[0] == '/' ? name : "/" + name; }
@@ -67,6 +71,9 @@ void AddOptions(CLI::App* app, Args* args) {
   app->add_option("--scan-topic", args->scan_topic, "laser scans")->capture_default_str();
   app->add_option("--detections-topic", args->detections_topic, "text detections")->capture_default_str();
   app->add_flag("--no-text", args->no_text, "laser only: ignore the text detections");
+  app->add_option("--camera-wait-s", args->options.camera_wait_s, "a scan waits for the detection arrays up to its "
+                  "stamp at most this long (the nodelet's ~camera_wait_s; 0: no waiting)")
+      ->capture_default_str()->check(tools::Number(0.0));
   app->add_option("--odom-frame", args->frames.odom_frame, "odometry frame")->capture_default_str();
   app->add_option("--base-frame", args->frames.base_frame, "robot frame")->capture_default_str();
   app->add_option("--map-frame", args->map_frame, "map frame")->capture_default_str();
@@ -78,6 +85,7 @@ void AddOptions(CLI::App* app, Args* args) {
   app->add_option("--progress-s", args->progress_s, "a progress line on stderr every this many seconds (rewritten in "
                   "place twice a second on a terminal; 0: none)")->capture_default_str()->check(tools::Number(0.0));
   app->callback([args] {
+    if (args->no_text) args->options.camera_wait_s = 0.0;  // as the nodelet without use_text
     args->scan_topic = Topic(args->scan_topic);
     args->detections_topic = Topic(args->detections_topic);
     for (const std::string& set : args->sets) {
@@ -168,6 +176,7 @@ int MapBag(const Args& args) {
     throw std::runtime_error(args.bag + ": no usable scan on " + args.scan_topic + " (" + std::to_string(n.scans) +
                              " messages, " + std::to_string(n.scans_dropped) + " dropped); nothing written");
   }
+  CountPlates(session.Flush().plates, &n);  // what still waited for the camera
   session.Solve();
   dl::TextMap text_map = session.GetTextMap();
   text_map.frame_id = args.map_frame;
