@@ -29,6 +29,7 @@
 #include "doorplate_localization/ros/sim_conversions.h"
 #include "doorplate_localization/sim/simulator.h"
 #include "rostest_util.h"
+#include "sim_bag_util.h"
 #include "test_worlds.h"
 
 namespace doorplate_localization {
@@ -42,27 +43,13 @@ constexpr double kCorridorWidthM = 2.0;
 constexpr double kReportLagS = 0.45;   // an OCR report is recorded this long after its image
 constexpr double kOdometryLagS = 0.25; // odometry tf this long after its stamp: the nodelet's scans wait for it
 
-tf2_msgs::TFMessage Tf(const geometry_msgs::TransformStamped& t) {
-  tf2_msgs::TFMessage msg;
-  msg.transforms.push_back(t);
-  return msg;
-}
 
 // Writes the bag; returns the number of plates reported.
 int WriteBag(const std::string& path) {
   Simulator sim(test::RectangleCorridor(24.0, kCorridorWidthM), SimulatorOptions{});
   rosbag::Bag bag(path, rosbag::bagmode::Write);
   const ros::Time t0(100.0);
-  tf2_msgs::TFMessage statics;
-  statics.transforms.push_back(ToTransformStampedMsg(sim.laser().MountPose(), "base_link", "laser", t0, 0.25));
-  geometry_msgs::TransformStamped camera;  // optical frame looking left, upright: z -> +y, x -> +x, y -> -z
-  camera.header.frame_id = "base_link";
-  camera.header.stamp = t0;
-  camera.child_frame_id = "camera_optical";
-  camera.transform.rotation.x = -std::sqrt(0.5);
-  camera.transform.rotation.w = std::sqrt(0.5);
-  statics.transforms.push_back(camera);
-  bag.write("/tf_static", t0, statics);
+  bag.write("/tf_static", t0, test::SimStaticTf(sim, t0));
 
   std::vector<double> plates_x;  // left (north) wall
   for (double x = 2.5; x < 21.0; x += 2.5) plates_x.push_back(x);
@@ -73,7 +60,7 @@ int WriteBag(const std::string& path) {
     sim.Step();
     if (++step % 5 != 0) continue;  // 20 Hz: scans on even ticks, camera images on odd ones
     const ros::Time stamp = t0 + ros::Duration(sim.time_s());
-    bag.write("/tf", stamp + ros::Duration(kOdometryLagS), Tf(ToTransformStampedMsg(sim.odom_pose(), "odom", "base_link", stamp)));
+    bag.write("/tf", stamp + ros::Duration(kOdometryLagS), test::Tf(ToTransformStampedMsg(sim.odom_pose(), "odom", "base_link", stamp)));
     if (step % 10 == 0) {
       bag.write("/scan", stamp, ToLaserScanMsg(sim.Scan(), 10.0, "laser", stamp));
       continue;

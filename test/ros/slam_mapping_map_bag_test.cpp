@@ -22,6 +22,7 @@
 #include "doorplate_localization/maps/text_map.h"
 #include "doorplate_localization/ros/sim_conversions.h"
 #include "doorplate_localization/sim/simulator.h"
+#include "sim_bag_util.h"
 #include "test_worlds.h"
 
 namespace doorplate_localization {
@@ -31,11 +32,6 @@ namespace fs = std::filesystem;
 
 const Vec2 kPlate{5.0, 2.0};  // on the north wall, facing south
 
-tf2_msgs::TFMessage Tf(const geometry_msgs::TransformStamped& t) {
-  tf2_msgs::TFMessage msg;
-  msg.transforms.push_back(t);
-  return msg;
-}
 
 struct BagRun {
   Pose2D world_to_odom;   // map frame of the SLAM = odom frame at the first scan
@@ -47,16 +43,7 @@ BagRun WriteBag(const std::string& path) {
   Simulator sim(test::RectangleCorridor(10.0, 2.0), SimulatorOptions{});
   rosbag::Bag bag(path, rosbag::bagmode::Write);
   const ros::Time t0(100.0);
-  tf2_msgs::TFMessage statics;
-  statics.transforms.push_back(ToTransformStampedMsg(sim.laser().MountPose(), "base_link", "laser", t0, 0.25));
-  geometry_msgs::TransformStamped camera;  // optical frame looking left, upright: z -> +y, x -> +x, y -> -z
-  camera.header.frame_id = "base_link";
-  camera.header.stamp = t0;
-  camera.child_frame_id = "camera_optical";
-  camera.transform.rotation.x = -std::sqrt(0.5);
-  camera.transform.rotation.w = std::sqrt(0.5);
-  statics.transforms.push_back(camera);
-  bag.write("/tf_static", t0, statics);
+  bag.write("/tf_static", t0, test::SimStaticTf(sim, t0));
 
   BagRun run;
   run.world_to_odom = sim.true_pose().Compose(sim.odom_pose().Inverse());
@@ -68,7 +55,7 @@ BagRun WriteBag(const std::string& path) {
     sim.Step();
     if (++step % 10 != 0) continue;  // 10 Hz sensors
     const ros::Time stamp = t0 + ros::Duration(sim.time_s());
-    bag.write("/tf", stamp, Tf(ToTransformStampedMsg(sim.odom_pose(), "odom", "base_link", stamp)));
+    bag.write("/tf", stamp, test::Tf(ToTransformStampedMsg(sim.odom_pose(), "odom", "base_link", stamp)));
     bag.write("/scan", stamp, ToLaserScanMsg(sim.Scan(), 10.0, "laser", stamp));
     const Pose2D p = sim.true_pose();
     const double bearing_in_base = std::atan2(kPlate.y - p.y_m, kPlate.x - p.x_m) - p.theta_rad;
