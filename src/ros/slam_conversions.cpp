@@ -220,6 +220,9 @@ diagnostic_msgs::DiagnosticStatus ToMapperDiagnosticStatus(const MapperHealth& h
   add("landmarks", std::to_string(h.landmarks));
   add("plates used", std::to_string(h.plates_used));
   add("plates ignored", std::to_string(h.plates_ignored));
+  add("scans waiting for the camera", h.scans_waiting_for_camera < 0 ? "off" : std::to_string(h.scans_waiting_for_camera));
+  add("camera waits run out", std::to_string(h.camera_waits_expired));
+  add("plates later than the camera wait", std::to_string(h.plates_late));
   add("map", h.map.empty() ? "none yet" : h.map);
   add("last error", h.error.empty() ? "none" : limits::TruncateForLog(h.error, 200));
   return d;

@@ -277,6 +277,9 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     h.landmarks = session_->slam().num_landmarks();
     h.plates_used = plates_used_;
     h.plates_ignored = plates_ignored_;
+    if (session_->options().camera_wait_s > 0) h.scans_waiting_for_camera = static_cast<int>(session_->waiting_scans());
+    h.camera_waits_expired = session_->counters().scans_camera_wait_expired;
+    h.plates_late = session_->counters().plates_late;
     if (latest_map_) {
       std::ostringstream map;
       map << latest_map_->info.width << " x " << latest_map_->info.height << " at " << latest_map_->info.resolution

@@ -248,6 +248,14 @@ TEST(ToMapperDiagnosticStatus, SaysMappingOnlyWhileScansAreTakenAndNamesDropsAnd
   EXPECT_EQ(value("scans processed"), "42");
   EXPECT_EQ(value("scan rate (Hz)"), "10.0");
   EXPECT_EQ(value("map"), "310 x 40 at 0.05 m");
+  EXPECT_EQ(value("scans waiting for the camera"), "off");  // the default: scans do not wait
+  h.scans_waiting_for_camera = 3;
+  h.camera_waits_expired = 2;
+  h.plates_late = 1;
+  d = ToMapperDiagnosticStatus(h, "/slam_mapping: mapping", "/slam_mapping");
+  EXPECT_EQ(value("scans waiting for the camera"), "3");
+  EXPECT_EQ(value("camera waits run out"), "2");
+  EXPECT_EQ(value("plates later than the camera wait"), "1");
   h.scans_dropped = 3;
   h.last_drop = "/scan: no tf odom -> laser";
   d = ToMapperDiagnosticStatus(h, "n", "n");

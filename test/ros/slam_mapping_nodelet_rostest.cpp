@@ -237,6 +237,10 @@ TEST(SlamMappingNodelet, PublishesItsHealthOnDiagnostics) {
   EXPECT_EQ(std::stoi(value("particles")), 20);  // the launch file's ~particles
   EXPECT_NE(value("map").find(" x "), std::string::npos) << value("map");
   EXPECT_EQ(value("last error"), "none");
+  // config/mapping.yaml: use_text with camera_wait_s 5: scans wait for the extractor's arrays (stamp order).
+  EXPECT_NE(value("scans waiting for the camera"), "off");
+  EXPECT_GE(std::stoi(value("scans waiting for the camera")), 0);
+  EXPECT_GE(std::stoll(value("camera waits run out")), 0);
 }
 
 }  // namespace

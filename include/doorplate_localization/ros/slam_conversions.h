@@ -90,6 +90,11 @@ struct MapperHealth {
   double neff = 0.0;               // the filter's last effective sample size
   int landmarks = 0;
   long long plates_used = 0, plates_ignored = 0;
+  // The stamp order (MappingSession camera_wait_s): scans waiting now for the text extractor's arrays (< 0:
+  // scans do not wait), waits that ran out since the start (the camera was off or more than camera_wait_s
+  // behind), sightings that came after a newer scan had gone to the filter.
+  int scans_waiting_for_camera = -1;
+  long long camera_waits_expired = 0, plates_late = 0;
   std::string map;                 // the last published map, "W x H at R m"; "" none yet
   std::string error;               // the last unexpected exception of a callback ("" none)
 };
@@ -99,8 +104,9 @@ std::string MapperStateText(const MapperHealth& health);
 
 // /diagnostics entry: level OK for mapping, WARN for waiting_for_scan, ERROR for error; message = the
 // state, plus "; last scan dropped: <why>" while scans are dropped; values: state, scan rate, last scan
-// age, scans processed, scans dropped, last drop, particles, neff, landmarks, plates used / ignored, map,
-// last error.
+// age, scans processed, scans dropped, last drop, particles, neff, landmarks, plates used / ignored, the
+// stamp order's scans waiting for the camera ("off" when they do not wait), waits run out and late plates,
+// map, last error.
 diagnostic_msgs::DiagnosticStatus ToMapperDiagnosticStatus(const MapperHealth& health, const std::string& name,
                                                            const std::string& hardware_id);
 
