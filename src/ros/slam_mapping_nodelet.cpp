@@ -22,7 +22,8 @@
 // Services: dynamic_map (nav_msgs/GetMap, the last published map) and ~save_maps (std_srvs/Trigger:
 // <map_output_dir>/<map_name>.pgm + .yaml (map_server), .text_map.yaml and .trajectory.txt (`scan_index x y
 // theta` per processed scan, the posterior mean path, as doorplate_map_bag writes it), atomically); the
-// maps are also saved when the nodelet shuts down, after the scans and plates still waiting for the camera. Parameters: slam_mapping_options.h, docs/parameters.md.
+// maps are also saved when the nodelet shuts down, after the scans and plates still waiting for the camera.
+// Parameters: slam_mapping_options.h, docs/parameters.md.
 // Bad input (broken scans, missing tf, stamps going backwards, unusable detections) is dropped with a
 // throttled warning naming the topic; the nodelet keeps running.
 // Threading: callbacks run on the nodelet's single-threaded queue (tf filter included); mutex_ also
@@ -61,7 +62,7 @@
 #include "doorplate_localization/ros/slam_conversions.h"
 #include "doorplate_localization/ros/text_detection_conversions.h"
 #include "doorplate_localization/slam/mapping_session.h"
-#include "map_tool_output.h"  // src/tools: the trajectory file the offline tools write too
+#include "map_tool_output.h"  // src/tools: the map pair and trajectory file, as the offline tools write them
 #include "scan_tf_filter.h"
 #include "slam_mapping_options.h"
 
@@ -345,10 +346,8 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     try {
       std::filesystem::create_directories(options_.map_output_dir);
       session_->Solve();
-      SaveOccupancyMap(*session_->Map(), base);
-      TextMap text_map = MapFrame(session_->GetTextMap());
-      text_map.occupancy_map = options_.map_name + ".yaml";
-      SaveTextMap(text_map, base + ".text_map.yaml");
+      const TextMap text_map = MapFrame(session_->GetTextMap());
+      tools::SaveMapPair(*session_->Map(), text_map, base);  // as the offline tools: occupancy_map = <name>.yaml
       tools::WriteTrajectory(session_->slam().slam().MeanTrajectory(), base + ".trajectory.txt");
       *message = "saved " + base + ".pgm, " + base + ".yaml, " + base + ".text_map.yaml (" +
                  std::to_string(text_map.landmarks.size()) + " plates) and " + base + ".trajectory.txt";
