@@ -75,13 +75,13 @@ Row Measure(const std::shared_ptr<const LocalizationGrid>& grid, int particles, 
   TextAmcl amcl(o, models);
   const Pose2D truth{20.0, 3.2, 0.1};
   amcl.Initialize(truth, Eigen::Vector3d(0.09, 0.09, 0.01).asDiagonal());
-  LocalizationScan geometry;
+  LaserScan geometry;
   geometry.angle_min_rad = -M_PI;
   geometry.angle_increment_rad = 2.0 * M_PI / 360.0;
   geometry.min_range_m = 0.15;
   geometry.max_range_m = 16.0;
   geometry.laser_pose = {0.1, 0.0, 0.0};
-  const LocalizationScan scan = CastScan(*grid, truth, geometry, 360);
+  const LaserScan scan = CastScan(*grid, truth, geometry, 360);
 
   // Each figure is the best of three blocks of `iterations` runs (the machine is shared).
   const auto best_of_3 = [&](const auto& body) {

@@ -10,7 +10,6 @@ add_library(doorplate_mcl
   src/mcl/laser_model.cpp
   src/mcl/likelihood_field_model.cpp
   src/mcl/beam_model.cpp
-  src/mcl/plate_reading.cpp
   src/mcl/text_match.cpp
   src/mcl/plate_likelihood_model.cpp
   src/mcl/plate_pose_sampler.cpp
@@ -38,7 +37,7 @@ install(TARGETS doorplate_mcl_bench RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DES
 
 if(CATKIN_ENABLE_TESTING)
   foreach(name particle localization_scan localization_grid grid_ray_caster diff_drive_motion_model laser_model
-               likelihood_field_model beam_model plate_reading text_match plate_likelihood_model plate_pose_sampler
+               likelihood_field_model beam_model text_match plate_likelihood_model plate_pose_sampler
                resampler pose_histogram kld_sampler pose_clusters augmented_mcl text_amcl text_amcl_resample
                text_amcl_plate text_amcl_setup text_amcl_session floor_belief building_session)
     # Targets prefixed mcl_: generic names (particle_test, resampler_test) would clash with other concerns.

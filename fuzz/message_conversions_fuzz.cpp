@@ -1,5 +1,5 @@
 // libFuzzer target: the message conversions every nodelet runs on what arrives on its topics
-// (src/ros/*conversions*.cpp): sensor_msgs/LaserScan (ValidateScan, ToLocalizationScan, ToRangeScan),
+// (src/ros/*conversions*.cpp): sensor_msgs/LaserScan (ValidateScan, ToLocalizationScan, ToMappingScan),
 // nav_msgs/OccupancyGrid (FromOccupancyGridMsg and back), doorplate_localization/TextDetectionArray
 // (ToPlateReadings, ToPlateSighting, CrossedPlateTexts) and the initial pose (FromInitialPoseMsg).
 // The first byte picks the message; the rest fills its fields (FuzzedDataProvider: any float bit pattern,
@@ -9,8 +9,8 @@
 // not what is tested here.
 // Any message must convert or be refused with a reason, and what a conversion accepts the core must
 // accept too: a scan ValidateScan passes is one ValidateLocalizationScan passes, a SLAM scan has ranges
-// and a finite, non-zero increment, a reading passes ValidatePlateReading, a sighting
-// ValidatePlateSighting, an accepted grid has width x height cells and converts back and forth, an
+// and a finite, non-zero increment, a reading (of either converter) passes
+// ValidatePlateReading, an accepted grid has width x height cells and converts back and forth, an
 // accepted initial pose is within limits::kMaxCoordinateM with a covariance TextAmcl::Initialize takes.
 #include <cmath>
 #include <cstddef>
@@ -29,7 +29,7 @@
 #include "doorplate_localization/common/limits.h"
 #include "doorplate_localization/maps/occupancy_grid.h"
 #include "doorplate_localization/mcl/localization_scan.h"
-#include "doorplate_localization/mcl/plate_reading.h"
+#include "doorplate_localization/sensors/plate_reading.h"
 #include "doorplate_localization/ros/amcl_conversions.h"
 #include "doorplate_localization/ros/map_conversions.h"
 #include "doorplate_localization/ros/scan_conversions.h"
@@ -153,8 +153,8 @@ void FuzzScan(FuzzedDataProvider& p) {
   }
   dl::LaserMounting mounting;
   if (!dl::ToLaserMounting(mounting_tf, &mounting).empty()) mounting = {};
-  dl::RangeScan scan;
-  if (dl::ToRangeScan(msg, mounting, max_range_m, min_valid_beams, &scan).empty()) {
+  dl::LaserScan scan;
+  if (dl::ToMappingScan(msg, mounting, max_range_m, min_valid_beams, &scan).empty()) {
     Check(problem.empty());  // the SLAM path never takes a scan ValidateScan refuses
     Check(!scan.ranges_m.empty() && scan.ranges_m.size() == msg.ranges.size());
     Check(std::isfinite(scan.angle_min_rad) && std::isfinite(scan.angle_increment_rad) &&
@@ -230,11 +230,7 @@ void FuzzDetections(FuzzedDataProvider& p) {
     const auto sighting = dl::ToPlateSighting(d, camera, &why_not);
     if (!sighting) continue;
     Check(problem.empty());
-    try {
-      dl::ValidatePlateSighting(*sighting);  // what the mapping session checks before it uses one
-    } catch (const std::invalid_argument&) {
-      std::abort();
-    }
+    Check(dl::ValidatePlateReading(*sighting).empty());  // what the mapping session checks before it uses one
   }
 }
 

@@ -78,7 +78,7 @@ std::optional<PlateRoute> AdjacentRoute(const TextMap& map, int from, int to, st
 }
 
 RoomGoalResult PlanFromReading(const RoomGoalPlanner& planner, const std::string& request,
-                               const PlateReading& reading) {
+                               const MatchedPlateReading& reading) {
   RoomGoalResult result;
   const TextMap& map = planner.map();
   const RoomCandidates candidates = planner.Candidates(request);

@@ -185,7 +185,7 @@ class GotoRun {
 
   // The session's scan input, then one control step of the phase.
   void ScanStep() {
-    const LocalizationScan scan = ToLocalizationScan(sim_.Scan(), sim_.world().sensors.laser);
+    const LaserScan scan = sim_.Scan();
     session_->AddScan(sim_.time_s(), sim_.odom_pose(), scan);
     const Pose2D estimate = session_->PoseAtOdometry(sim_.odom_pose());
     const double angle_min = scan.angle_min_rad + scan.laser_pose.theta_rad;

@@ -130,7 +130,7 @@ class TrialRun {
 
   // Control and the session's scan input at the laser's rate. Returns true when the trial is over.
   bool ScanStep() {
-    last_scan_ = ToLocalizationScan(sim_.Scan(), sim_.world().sensors.laser);
+    last_scan_ = sim_.Scan();
     const VelocityCommand cmd = Drive();
     sim_.SetCommand(cmd.linear_mps, cmd.angular_rps);
     session_->AddScan(sim_.time_s(), sim_.odom_pose(), last_scan_);
@@ -248,7 +248,7 @@ class TrialRun {
   std::unique_ptr<BuildingSession> session_;
   std::unique_ptr<TextExtractor> extractor_;
   double camera_yaw_rad_ = 0.0;
-  LocalizationScan last_scan_;  // the drive steers on it
+  LaserScan last_scan_;  // the drive steers on it
   double search_start_travel_m_ = 0.0;
   double search_start_time_s_ = 0.0;
   LocalizeTrial trial_;

@@ -1,6 +1,6 @@
-// What the localization experiment feeds the filter, converted from the simulator and the text
-// extractor without ROS: the simulated scan as a LocalizationScan, and a PlateReport (camera bearing) as
-// a PlateReading (base_link bearing + laser range). The Text AMCL nodelet does the same from messages
+// What the localization experiment feeds the filter from the text extractor without ROS: a PlateReport
+// (camera bearing) as a PlateReading (base_link bearing; the session measures the range). The simulator's
+// scans need no conversion (they are the core's LaserScan with the mounting pose). The Text AMCL nodelet does the same from messages
 // and tf; here the mounting poses come from the simulated world's sensor options.
 // Frames: base_link (x forward, y left, REP-103); bearings in radians counter-clockwise; ranges in metres.
 #pragma once
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "doorplate_localization/mcl/localization_scan.h"
-#include "doorplate_localization/mcl/plate_reading.h"
+#include "doorplate_localization/sensors/plate_reading.h"
 #include "doorplate_localization/sim/laser_simulator.h"
 #include "doorplate_localization/sim/sensor_options.h"
 #include "doorplate_localization/mcl/text_amcl_session.h"
@@ -19,11 +19,8 @@
 
 namespace doorplate_localization {
 
-// The scan with the laser's mounting pose (mount_x_m, mount_y_m, mount_yaw_rad) in base_link.
-LocalizationScan ToLocalizationScan(const SimulatedScan& scan, const LaserOptions& laser);
-
 // A plate report of the camera mounted with yaw `camera_yaw_rad` in base_link (left camera: +pi/2) as a
-// filter reading (PlateReadingAt): text, confidence (the report's vote share × mean OCR confidence), base_link bearing =
+// filter reading (PlateReadingFromCamera): text, confidence (the report's vote share × mean OCR confidence), base_link bearing =
 // camera yaw + the report's bearing (both counter-clockwise), no range (TextAmclSession measures it from its
 // scans, as in the nodelet), and the camera side from the sign of the yaw. The camera's optical centre is
 // taken as base_link's origin (as above).

@@ -31,16 +31,6 @@ long PeakRssKb() {
   return usage.ru_maxrss;  // Linux: kilobytes
 }
 
-RangeScan ToRangeScan(const SimulatedScan& scan, const LaserOptions& laser) {
-  RangeScan out;
-  out.angle_min_rad = scan.angle_min_rad;
-  out.angle_increment_rad = scan.angle_increment_rad;
-  out.min_range_m = scan.min_range_m;
-  out.ranges_m = scan.ranges_m;
-  out.laser_pose = {laser.mount_x_m, laser.mount_y_m, laser.mount_yaw_rad};
-  return out;
-}
-
 // Records that a pass just ended (its reason and the processed scan it ended at).
 void NotePassEnd(const FloorExplorer& explorer, MapEvalResult* result) {
   if (result->pass_ends.size() >= static_cast<std::size_t>(explorer.passes_ended())) return;  // noted
@@ -116,13 +106,13 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
                     phase.c_str());
     }
     if (step % steps_per_scan == 0) {
-      const SimulatedScan scan = sim.Scan();
+      const LaserScan scan = sim.Scan();
       if (first) {
         result.world_from_map = sim.true_pose().Compose(sim.odom_pose().Inverse());
         first = false;
       }
       const double t0 = ThreadCpuSeconds();
-      const MappingUpdate update = session.AddScan(sim.time_s(), sim.odom_pose(), ToRangeScan(scan, sim_world.sensors.laser));
+      const MappingUpdate update = session.AddScan(sim.time_s(), sim.odom_pose(), scan);
       for (const MappingPlateOutcome& o : update.plates) result.plate_reports_used += o.result.used();  // held ones
       if (update.scan_processed) {
         ++result.scans_processed;
@@ -152,10 +142,8 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
           ++result.plate_reports;  // read (the explorer used it), not given to the laser-only SLAM
           continue;
         }
-        PlateSighting sighting;
-        sighting.text = report.text;
-        sighting.confidence = report.confidence;
-        sighting.bearing_rad = NormalizeAngle(camera_yaw_rad + report.bearing_rad);
+        const PlateReading sighting =
+            PlateReadingFromCamera(report.text, report.confidence, CameraAxis{camera_yaw_rad, 1.0}, report.bearing_rad);
         // Stamped now, with the odometry now (the report's frame may be older: Table II's convention).
         const double t0 = ThreadCpuSeconds();
         const MappingUpdate update = session.AddPlates(sim.time_s(), sim.odom_pose(), {sighting});

@@ -162,7 +162,7 @@ OcrEvalResult RunOcrEval(const World& world, const OcrEvalOptions& options) {
     int next_frame = 0;
     for (long long step = 0; sim.time_s() < options.max_pass_time_s; ++step) {
       if (step % std::max(1LL, steps_per_scan) == 0) {
-        const SimulatedScan scan = sim.Scan();
+        const LaserScan scan = sim.Scan();
         const VelocityCommand cmd = sweep.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, sim.odom_pose(),
                                                    sim.time_s());
         if (sweep.phase() == SweepPhase::kDone) break;

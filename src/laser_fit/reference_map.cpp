@@ -33,7 +33,7 @@ TiledGridOptions GridOptions(const ReferenceMapOptions& o) {
 
 ReferenceMap::ReferenceMap(const ReferenceMapOptions& options) : options_(options), tiled_(GridOptions(options)) {}
 
-void ReferenceMap::AddScan(const Pose2D& laser_in_map, const RangeScan& scan) {
+void ReferenceMap::AddScan(const Pose2D& laser_in_map, const LaserScan& scan) {
   if (cells_) throw std::logic_error("ReferenceMap::AddScan after Finish");
   const Vec2 from = laser_in_map.Position();
   for (size_t i = 0; i < scan.ranges_m.size(); ++i) {

@@ -39,7 +39,7 @@ double BeamModel::BeamProbability(double measured_m, double expected_m, double m
   return pz;
 }
 
-void BeamModel::LogLikelihoods(const LocalizationScan& scan, const std::vector<Particle>& particles,
+void BeamModel::LogLikelihoods(const LaserScan& scan, const std::vector<Particle>& particles,
                                std::vector<double>* log_likelihoods) {
   const std::vector<SelectedBeam> beams = SelectBeams(scan, options_.beams);
   const double max_range = EffectiveMaxRange(scan, options_.beams);

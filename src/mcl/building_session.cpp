@@ -123,7 +123,7 @@ void BuildingSession::Forget(double now_s) {
   while (!readings_.empty() && readings_.front().stamp_s < oldest) readings_.pop_front();
 }
 
-void BuildingSession::Remember(double stamp_s, const Pose2D& base_in_odom, const LocalizationScan* scan) {
+void BuildingSession::Remember(double stamp_s, const Pose2D& base_in_odom, const LaserScan* scan) {
   if (!events_.empty() && stamp_s < events_.back().stamp_s) return;
   if (scan) {
     // Keep the scans of the last two scan events only (what a session's plate range rule looks at).
@@ -132,7 +132,7 @@ void BuildingSession::Remember(double stamp_s, const Pose2D& base_in_odom, const
       if (it->scan && ++scans >= 2) it->scan.reset();
     }
   }
-  events_.push_back({stamp_s, base_in_odom, scan ? std::optional<LocalizationScan>(*scan) : std::nullopt});
+  events_.push_back({stamp_s, base_in_odom, scan ? std::optional<LaserScan>(*scan) : std::nullopt});
   Forget(stamp_s);
 }
 
@@ -143,7 +143,7 @@ SessionUpdate BuildingSession::AddOdometry(double stamp_s, const Pose2D& base_in
   return update;
 }
 
-SessionUpdate BuildingSession::AddScan(double stamp_s, const Pose2D& base_in_odom, const LocalizationScan& scan) {
+SessionUpdate BuildingSession::AddScan(double stamp_s, const Pose2D& base_in_odom, const LaserScan& scan) {
   floor_changed_ = false;
   const SessionUpdate update = Current().AddScan(stamp_s, base_in_odom, scan);  // throws for a bad scan
   Remember(stamp_s, base_in_odom, &scan);

@@ -53,9 +53,9 @@ bool HasLineOfSight(const LocalizationGrid& grid, Vec2 from, Vec2 to, double tol
   return free >= distance - tolerance_m;
 }
 
-LocalizationScan CastScan(const LocalizationGrid& grid, const Pose2D& robot_pose, const LocalizationScan& scan_geometry,
+LaserScan CastScan(const LocalizationGrid& grid, const Pose2D& robot_pose, const LaserScan& scan_geometry,
                    int num_beams, bool unknown_blocks) {
-  LocalizationScan scan = scan_geometry;
+  LaserScan scan = scan_geometry;
   scan.ranges_m.assign(num_beams, std::numeric_limits<float>::infinity());
   const Pose2D laser = robot_pose.Compose(scan_geometry.laser_pose);
   for (int i = 0; i < num_beams; ++i) {

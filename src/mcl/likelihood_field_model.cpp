@@ -86,7 +86,7 @@ void LikelihoodFieldModel::EndPointSteps(const Pose2D& robot, const std::vector<
   }
 }
 
-void LikelihoodFieldModel::LogLikelihoods(const LocalizationScan& scan, const std::vector<Particle>& particles,
+void LikelihoodFieldModel::LogLikelihoods(const LaserScan& scan, const std::vector<Particle>& particles,
                                           std::vector<double>* log_likelihoods) {
   const std::vector<SelectedBeam> selected = SelectBeams(scan, options_.beams);
   const double max_range = EffectiveMaxRange(scan, options_.beams);

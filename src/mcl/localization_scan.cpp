@@ -7,26 +7,26 @@
 
 namespace doorplate_localization {
 
-std::string ValidateLocalizationScan(const LocalizationScan& scan) {
+std::string ValidateLocalizationScan(const LaserScan& scan) {
   const auto finite = [](double v) { return std::isfinite(v); };
-  if (scan.ranges_m.empty()) return "LocalizationScan.ranges_m: empty";
+  if (scan.ranges_m.empty()) return "LaserScan.ranges_m: empty";
   if (scan.ranges_m.size() > limits::kMaxScanBeams) {
-    return "LocalizationScan.ranges_m: " + std::to_string(scan.ranges_m.size()) + " beams, more than the limit of " +
+    return "LaserScan.ranges_m: " + std::to_string(scan.ranges_m.size()) + " beams, more than the limit of " +
            std::to_string(limits::kMaxScanBeams) + " (limits::kMaxScanBeams)";
   }
-  if (!finite(scan.angle_min_rad)) return "LocalizationScan.angle_min_rad: must be finite";
+  if (!finite(scan.angle_min_rad)) return "LaserScan.angle_min_rad: must be finite";
   if (!finite(scan.angle_increment_rad) || scan.angle_increment_rad == 0.0) {
-    return "LocalizationScan.angle_increment_rad: must be finite and non-zero, got " +
+    return "LaserScan.angle_increment_rad: must be finite and non-zero, got " +
            std::to_string(scan.angle_increment_rad);
   }
   if (!finite(scan.min_range_m) || scan.min_range_m < 0.0) {
-    return "LocalizationScan.min_range_m: must be finite and >= 0, got " + std::to_string(scan.min_range_m);
+    return "LaserScan.min_range_m: must be finite and >= 0, got " + std::to_string(scan.min_range_m);
   }
   if (!finite(scan.max_range_m) || scan.max_range_m <= scan.min_range_m) {
-    return "LocalizationScan.max_range_m: must be finite and > min_range_m, got " + std::to_string(scan.max_range_m);
+    return "LaserScan.max_range_m: must be finite and > min_range_m, got " + std::to_string(scan.max_range_m);
   }
   const Pose2D& m = scan.laser_pose;
-  if (!finite(m.x_m) || !finite(m.y_m) || !finite(m.theta_rad)) return "LocalizationScan.laser_pose: must be finite";
+  if (!finite(m.x_m) || !finite(m.y_m) || !finite(m.theta_rad)) return "LaserScan.laser_pose: must be finite";
   return "";
 }
 
@@ -37,17 +37,17 @@ BeamKind ClassifyRange(float range_m, double min_range_m, double max_range_m) {
   return BeamKind::kHit;
 }
 
-double EffectiveMinRange(const LocalizationScan& scan, const BeamSelectionOptions& options) {
+double EffectiveMinRange(const LaserScan& scan, const BeamSelectionOptions& options) {
   return options.laser_min_range_m > 0.0 ? std::max(options.laser_min_range_m, scan.min_range_m)
                                          : scan.min_range_m;
 }
 
-double EffectiveMaxRange(const LocalizationScan& scan, const BeamSelectionOptions& options) {
+double EffectiveMaxRange(const LaserScan& scan, const BeamSelectionOptions& options) {
   return options.laser_max_range_m > 0.0 ? std::min(options.laser_max_range_m, scan.max_range_m)
                                          : scan.max_range_m;
 }
 
-std::vector<SelectedBeam> SelectBeams(const LocalizationScan& scan, const BeamSelectionOptions& options) {
+std::vector<SelectedBeam> SelectBeams(const LaserScan& scan, const BeamSelectionOptions& options) {
   const std::string error = ValidateLocalizationScan(scan);
   if (!error.empty()) throw std::invalid_argument(error);
   if (options.laser_max_beams < 1) {
@@ -72,16 +72,6 @@ std::vector<SelectedBeam> SelectBeams(const LocalizationScan& scan, const BeamSe
                      kind == BeamKind::kMaxRange ? max_range : static_cast<double>(r), kind});
   }
   return beams;
-}
-
-PlateReading PlateReadingAt(const std::string& text, double confidence, double bearing_rad,
-                            std::optional<double> range_m) {
-  PlateReading reading;
-  reading.text = text;
-  reading.confidence = confidence;
-  reading.bearing_rad = std::isfinite(bearing_rad) ? NormalizeAngle(bearing_rad) : bearing_rad;
-  reading.range_m = range_m;
-  return reading;
 }
 
 }  // namespace doorplate_localization

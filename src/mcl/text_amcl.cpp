@@ -147,7 +147,7 @@ bool TextAmcl::UpdateOdometry(const Pose2D& odom_pose) {
   return true;
 }
 
-bool TextAmcl::UpdateLaser(const LocalizationScan& scan) {
+bool TextAmcl::UpdateLaser(const LaserScan& scan) {
   const std::string error = ValidateLocalizationScan(scan);
   if (!error.empty()) throw std::invalid_argument(error);
   if (particles_.empty() || !(pending_update_ || force_update_)) return false;

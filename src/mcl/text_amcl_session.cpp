@@ -158,7 +158,7 @@ SessionUpdate TextAmclSession::AddOdometry(double stamp_s, const Pose2D& base_in
   return update;
 }
 
-SessionUpdate TextAmclSession::AddScan(double stamp_s, const Pose2D& base_in_odom, const LocalizationScan& scan) {
+SessionUpdate TextAmclSession::AddScan(double stamp_s, const Pose2D& base_in_odom, const LaserScan& scan) {
   const std::string problem = ValidateLocalizationScan(scan);
   if (!problem.empty()) throw std::invalid_argument(problem);
   SessionUpdate update;

@@ -15,8 +15,8 @@
 
 namespace doorplate_localization {
 
-LocalizationScan ToLocalizationScan(const sensor_msgs::LaserScan& msg, const Pose2D& laser_in_base) {
-  LocalizationScan scan;
+LaserScan ToLocalizationScan(const sensor_msgs::LaserScan& msg, const Pose2D& laser_in_base) {
+  LaserScan scan;
   scan.angle_min_rad = msg.angle_min;
   scan.angle_increment_rad = msg.angle_increment;
   scan.min_range_m = msg.range_min;
@@ -31,10 +31,7 @@ std::vector<PlateReading> ToPlateReadings(const TextDetectionArray& msg, const C
   std::vector<PlateReading> readings;
   for (const TextDetection& d : msg.detections) {
     if (!IsPlateReport(d)) continue;
-    const double bearing_rad = camera.yaw_rad + camera.bearing_sign * d.bearing_rad;
-    const PlateReading r = PlateReadingAt(
-        d.text, d.confidence, std::isfinite(d.bearing_rad) ? bearing_rad : d.bearing_rad,  // NaN: for the check below
-        std::nullopt);
+    const PlateReading r = PlateReadingFromCamera(d.text, d.confidence, camera, d.bearing_rad);
     const std::string problem = ValidatePlateReading(r);
     if (!problem.empty()) {
       if (problems != nullptr) problems->push_back("detection '" + limits::TruncateForLog(d.text) + "': " + problem);

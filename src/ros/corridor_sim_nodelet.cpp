@@ -56,7 +56,7 @@ class RateGate {
 // What one physics step produced, copied out under the lock and published after it.
 struct StepOutput {
   double time_s = 0.0;
-  std::optional<SimulatedScan> scan;
+  std::optional<LaserScan> scan;
   bool odometry_due = false;
   Pose2D odom_pose, true_pose;
   double linear_mps = 0.0, angular_rps = 0.0;

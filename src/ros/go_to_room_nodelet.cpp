@@ -50,7 +50,7 @@ namespace doorplate_localization {
 class GoToRoomNodelet : public nodelet::Nodelet {
  private:
   struct Reading {
-    PlateReading plate;
+    MatchedPlateReading plate;
     ros::Time stamp;
   };
 
@@ -334,7 +334,7 @@ class GoToRoomNodelet : public nodelet::Nodelet {
                               text.c_str(), problem.c_str());
         continue;
       }
-      reading_ = Reading{PlateReading{plates.front(), *odom, *left}, msg->header.stamp};
+      reading_ = Reading{MatchedPlateReading{plates.front(), *odom, *left}, msg->header.stamp};
     }
     if (pending_ && reading_) TryPlan(ros::Time(0));
   }

@@ -29,7 +29,7 @@ ros::Time SimTime(double time_s) {
   return ros::Time().fromSec(time_s);
 }
 
-sensor_msgs::LaserScan ToLaserScanMsg(const SimulatedScan& scan, double rate_hz, const std::string& frame_id,
+sensor_msgs::LaserScan ToLaserScanMsg(const LaserScan& scan, double rate_hz, const std::string& frame_id,
                                       const ros::Time& stamp) {
   if (!(rate_hz > 0.0)) {
     throw std::invalid_argument("ToLaserScanMsg: rate_hz must be > 0, got " + std::to_string(rate_hz));

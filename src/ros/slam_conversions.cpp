@@ -48,8 +48,8 @@ std::string ToLaserMounting(const geometry_msgs::Transform& base_to_laser, Laser
   return "";
 }
 
-std::string ToRangeScan(const sensor_msgs::LaserScan& msg, const LaserMounting& mounting, double max_range_m,
-                        int min_valid_beams, RangeScan* out) {
+std::string ToMappingScan(const sensor_msgs::LaserScan& msg, const LaserMounting& mounting, double max_range_m,
+                        int min_valid_beams, LaserScan* out) {
   std::string problem = ValidateScan(msg);
   if (!problem.empty()) return problem;
   // Drivers disagree on whether angle_max is the last beam's angle: allow one beam either way.
@@ -61,7 +61,7 @@ std::string ToRangeScan(const sensor_msgs::LaserScan& msg, const LaserMounting& 
     return p.str();
   }
   const float no_echo_from = max_range_m > 0.0 ? static_cast<float>(max_range_m) : msg.range_max;
-  RangeScan scan;
+  LaserScan scan;
   scan.ranges_m.resize(msg.ranges.size());
   int valid = 0;
   for (std::size_t i = 0; i < msg.ranges.size(); ++i) {
@@ -91,7 +91,7 @@ std::string ToRangeScan(const sensor_msgs::LaserScan& msg, const LaserMounting& 
   return "";
 }
 
-std::optional<PlateSighting> ToPlateSighting(const TextDetection& msg, const CameraAxis& camera,
+std::optional<PlateReading> ToPlateSighting(const TextDetection& msg, const CameraAxis& camera,
                                              std::string* why_not) {
   std::string problem;
   if (!msg.crossed_center) {
@@ -108,15 +108,11 @@ std::optional<PlateSighting> ToPlateSighting(const TextDetection& msg, const Cam
     if (why_not != nullptr) *why_not = problem;
     return std::nullopt;
   }
-  PlateSighting sighting;
-  sighting.text = msg.text;
-  sighting.confidence = msg.confidence;
-  sighting.bearing_rad = NormalizeAngle(camera.yaw_rad + camera.bearing_sign * msg.bearing_rad);
-  return sighting;
+  return PlateReadingFromCamera(msg.text, msg.confidence, camera, msg.bearing_rad);
 }
 
 std::string PrepareSlamScan(const sensor_msgs::LaserScan& msg, const TransformLookup& lookup,
-                            const SlamInputFrames& frames, RangeScan* scan, Pose2D* odometry_pose) {
+                            const SlamInputFrames& frames, LaserScan* scan, Pose2D* odometry_pose) {
   std::string problem = ValidateScan(msg);  // before any lookup: an empty frame_id is no tf question
   if (!problem.empty()) return problem;
   const auto base_to_laser = lookup(frames.base_frame, msg.header.frame_id, msg.header.stamp, &problem);
@@ -129,14 +125,14 @@ std::string PrepareSlamScan(const sensor_msgs::LaserScan& msg, const TransformLo
   Pose2D odom_pose;
   problem = OdometryPose(*odom_to_base, &odom_pose);
   if (!problem.empty()) return problem;
-  problem = ToRangeScan(msg, mounting, frames.max_range_m, frames.min_valid_beams, scan);
+  problem = ToMappingScan(msg, mounting, frames.max_range_m, frames.min_valid_beams, scan);
   if (!problem.empty()) return problem;
   *odometry_pose = odom_pose;
   return "";
 }
 
 std::string PrepareSlamSightings(const TextDetectionArray& msg, const TransformLookup& lookup,
-                                 const SlamInputFrames& frames, std::vector<PlateSighting>* sightings,
+                                 const SlamInputFrames& frames, std::vector<PlateReading>* sightings,
                                  Pose2D* odometry_pose, std::vector<std::string>* rejected) {
   sightings->clear();
   if (msg.header.frame_id.empty()) return "header.frame_id is empty";

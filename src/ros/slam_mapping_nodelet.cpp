@@ -157,7 +157,7 @@ class SlamMappingNodelet : public nodelet::Nodelet {
   void OnScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex_);
     const ros::Time stamp = msg->header.stamp;
-    RangeScan scan;
+    LaserScan scan;
     Pose2D odom_pose;
     const std::string problem = PrepareSlamScan(*msg, lookup_, frames_, &scan, &odom_pose);
     if (!problem.empty()) return DropScan(problem);
@@ -208,7 +208,7 @@ class SlamMappingNodelet : public nodelet::Nodelet {
   // The array's sightings to the session; true when one was used (the landmarks changed).
   bool AddDetections(const TextDetectionArray& msg) {
     const ros::Time stamp = msg.header.stamp;
-    std::vector<PlateSighting> sightings;
+    std::vector<PlateReading> sightings;
     std::vector<std::string> rejected;
     Pose2D odom_pose;
     const std::string problem = PrepareSlamSightings(msg, lookup_, frames_, &sightings, &odom_pose, &rejected);
@@ -221,7 +221,7 @@ class SlamMappingNodelet : public nodelet::Nodelet {
       NODELET_WARN_THROTTLE(5.0, "%s: detection %s; dropping it", detections_topic_.c_str(), r.c_str());
     }
     bool changed = false;
-    for (const PlateSighting& sighting : sightings) {  // one by one: a malformed one does not drop the others
+    for (const PlateReading& sighting : sightings) {  // one by one: a malformed one does not drop the others
       try {
         const MappingUpdate update = session_->AddPlates(stamp.toSec(), odom_pose, {sighting});
         changed = NotePlates(update.plates) || changed;

@@ -32,13 +32,14 @@ Pose2D LaserSimulator::MountPose() const {
   return {options_.mount_x_m, options_.mount_y_m, options_.mount_yaw_rad};
 }
 
-SimulatedScan LaserSimulator::CastExact(const World& world, const Pose2D& robot_pose,
+LaserScan LaserSimulator::CastExact(const World& world, const Pose2D& robot_pose,
                                         std::vector<float>* incidence_rad) const {
-  SimulatedScan scan;
+  LaserScan scan;
   scan.angle_min_rad = options_.angle_min_rad;
   scan.angle_increment_rad = 2.0 * M_PI / options_.num_beams;
   scan.min_range_m = options_.min_range_m;
   scan.max_range_m = options_.max_range_m;
+  scan.laser_pose = MountPose();
   scan.ranges_m.assign(options_.num_beams, std::numeric_limits<float>::infinity());
   if (incidence_rad) incidence_rad->assign(options_.num_beams, std::numeric_limits<float>::quiet_NaN());
 
@@ -73,9 +74,9 @@ SimulatedScan LaserSimulator::CastExact(const World& world, const Pose2D& robot_
   return scan;
 }
 
-SimulatedScan LaserSimulator::Simulate(const World& world, const Pose2D& robot_pose, std::mt19937_64& rng) const {
+LaserScan LaserSimulator::Simulate(const World& world, const Pose2D& robot_pose, std::mt19937_64& rng) const {
   std::vector<float> incidence;
-  SimulatedScan scan = CastExact(world, robot_pose, error_model_->NeedsIncidence() ? &incidence : nullptr);
+  LaserScan scan = CastExact(world, robot_pose, error_model_->NeedsIncidence() ? &incidence : nullptr);
   // 360° device: the last beam's neighbour is the first.
   error_model_->Apply(&scan.ranges_m, incidence, scan.min_range_m, scan.max_range_m, true, rng);
   return scan;

@@ -92,7 +92,7 @@ void Simulator::UpdatePeople() {
   people_time_s_ = time_s_;
 }
 
-SimulatedScan Simulator::Scan() {
+LaserScan Simulator::Scan() {
   UpdatePeople();
   return laser_.Simulate(world_, true_pose_, laser_rng_);
 }

@@ -62,7 +62,7 @@ void TopDownView::DrawWorld() {
   }
 }
 
-void TopDownView::DrawScan(const SimulatedScan& scan, const Pose2D& laser_pose, const cv::Scalar& bgr) {
+void TopDownView::DrawScan(const LaserScan& scan, const Pose2D& laser_pose, const cv::Scalar& bgr) {
   for (std::size_t i = 0; i < scan.ranges_m.size(); ++i) {
     const double r = scan.ranges_m[i];
     if (!std::isfinite(r)) continue;

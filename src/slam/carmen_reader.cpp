@@ -56,7 +56,7 @@ CarmenScan ParseFlaser(const std::vector<std::string>& t, const std::string& whe
                          std::to_string(fields) + ": does the number of ranges match the beam count?");
   }
   CarmenScan out;
-  RangeScan& scan = out.scan;
+  LaserScan& scan = out.scan;
   const int steps = (n % 2 == 0) ? n : n - 1;  // 180 -> 1°, 360 -> 0.5°, 361 -> 0.5° with both ends
   scan.angle_min_rad = options.first_beam_angle_rad;
   scan.angle_increment_rad = options.field_of_view_rad / steps;

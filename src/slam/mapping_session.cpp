@@ -39,7 +39,7 @@ void ValidateMappingSessionOptions(const MappingSessionOptions& o) {
 MappingSession::MappingSession(const MappingSessionOptions& options)
     : options_(Validated(options)), slam_(options.slam) {}
 
-MappingUpdate MappingSession::AddScan(double stamp_s, const Pose2D& base_in_odom, const RangeScan& scan) {
+MappingUpdate MappingSession::AddScan(double stamp_s, const Pose2D& base_in_odom, const LaserScan& scan) {
   if (!std::isfinite(stamp_s)) throw std::invalid_argument("MappingSession::AddScan: stamp_s must be finite");
   if (!Finite(base_in_odom)) throw std::invalid_argument("MappingSession::AddScan: base_in_odom must be finite");
   if (scan.ranges_m.empty() || !std::isfinite(scan.angle_min_rad) || !std::isfinite(scan.angle_increment_rad) ||
@@ -179,14 +179,18 @@ std::optional<double> MappingSession::RangeFor(double stamp_s, double bearing_ra
 }
 
 MappingUpdate MappingSession::AddPlates(double stamp_s, const Pose2D& base_in_odom,
-                                        const std::vector<PlateSighting>& sightings) {
+                                        const std::vector<PlateReading>& sightings) {
   if (!std::isfinite(stamp_s)) throw std::invalid_argument("MappingSession::AddPlates: stamp_s must be finite");
   if (!Finite(base_in_odom)) throw std::invalid_argument("MappingSession::AddPlates: base_in_odom must be finite");
-  for (const PlateSighting& s : sightings) ValidatePlateSighting(s);  // all or nothing
+  for (const PlateReading& s : sightings) {  // all or nothing
+    if (const std::string bad = ValidatePlateReading(s); !bad.empty()) {
+      throw std::invalid_argument("MappingSession::AddPlates: " + bad);
+    }
+  }
   MappingUpdate update;
   bool used = false;
   if (Ordering()) camera_stamp_s_ = std::max(stamp_s, camera_stamp_s_.value_or(stamp_s));
-  for (const PlateSighting& given : sightings) {
+  for (const PlateReading& given : sightings) {
     ++counters_.plate_sightings;
     const bool late = Ordering() && last_sent_stamp_s_ && stamp_s < *last_sent_stamp_s_;
     if (late) ++counters_.plates_late;
@@ -208,7 +212,7 @@ MappingUpdate MappingSession::AddPlates(double stamp_s, const Pose2D& base_in_od
   return update;
 }
 
-bool MappingSession::ApplyPlate(double stamp_s, const Pose2D& base_in_odom, const PlateSighting& given,
+bool MappingSession::ApplyPlate(double stamp_s, const Pose2D& base_in_odom, const PlateReading& given,
                                 MappingUpdate* update) {
   MappingPlateOutcome outcome;
   outcome.stamp_s = stamp_s;

@@ -30,7 +30,7 @@ const RbpfSlamOptions& Validated(const RbpfSlamOptions& o) {
   return o;
 }
 
-void ValidateScan(const RangeScan& scan) {
+void ValidateScan(const LaserScan& scan) {
   if (scan.ranges_m.empty() || !std::isfinite(scan.angle_increment_rad) || scan.angle_increment_rad == 0.0 ||
       !std::isfinite(scan.angle_min_rad)) {
     throw std::invalid_argument(
@@ -72,7 +72,7 @@ RbpfSlam::RbpfSlam(const RbpfSlamOptions& options)
       matcher_(options.matcher, options.grid),
       rng_(options.seed) {}
 
-RbpfSlam::ScanPoints RbpfSlam::PrepareScan(const RangeScan& scan) const {
+RbpfSlam::ScanPoints RbpfSlam::PrepareScan(const LaserScan& scan) const {
   ScanPoints points;
   points.origin = scan.laser_pose.Position();
   std::vector<Vec2> hits;
@@ -115,12 +115,12 @@ void RbpfSlam::Integrate(TiledGrid& map, const Pose2D& pose, const ScanPoints& p
   }
 }
 
-void RbpfSlam::IntegrateScanInto(TiledGrid* map, const RangeScan& scan, const Pose2D& pose) const {
+void RbpfSlam::IntegrateScanInto(TiledGrid* map, const LaserScan& scan, const Pose2D& pose) const {
   ValidateScan(scan);
   Integrate(*map, pose, PrepareScan(scan));
 }
 
-bool RbpfSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index, bool force_update) {
+bool RbpfSlam::AddScan(const LaserScan& scan, const Pose2D& odometry_pose, int scan_index, bool force_update) {
   ValidateScan(scan);
   ++stats_.scans_seen;
   if (!started_) {

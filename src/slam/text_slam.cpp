@@ -33,20 +33,6 @@ const TextSlamOptions& Validated(const TextSlamOptions& o) {
   return o;
 }
 
-}  // namespace
-
-void ValidatePlateSighting(const PlateSighting& s) {
-  const auto fail = [](const std::string& what) { throw std::invalid_argument("PlateSighting." + what); };
-  if (s.text.empty()) fail("text: must not be empty");
-  if (!(s.confidence >= 0 && s.confidence <= 1)) fail("confidence: must be in [0, 1], got " + std::to_string(s.confidence));
-  if (!(std::abs(s.bearing_rad) <= kPi + 1e-9)) fail("bearing_rad: must be in [-pi, pi], got " + std::to_string(s.bearing_rad));
-  if (s.range_m && !(std::isfinite(*s.range_m) && *s.range_m >= 0)) {
-    fail("range_m: must be finite and >= 0 when set, got " + std::to_string(*s.range_m));
-  }
-}
-
-namespace {
-
 // `caller` names the method in the message ("TextSlam::AddScan").
 void ValidatePose(const Pose2D& p, const char* caller) {
   if (!std::isfinite(p.x_m) || !std::isfinite(p.y_m) || !std::isfinite(p.theta_rad)) {
@@ -76,7 +62,7 @@ TextSlam::TextSlam(const TextSlamOptions& options)
       slam_(options.slam),
       back_end_(BackEndOptions(options)) {}
 
-bool TextSlam::AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index, bool force_update) {
+bool TextSlam::AddScan(const LaserScan& scan, const Pose2D& odometry_pose, int scan_index, bool force_update) {
   ValidatePose(odometry_pose, "TextSlam::AddScan");
   const int degenerate_before = slam_.stats().degenerate_scans;
   const bool processed = slam_.AddScan(scan, odometry_pose, scan_index, force_update);
@@ -113,8 +99,10 @@ std::vector<Pose2D> TextSlam::Trajectory() const {
   return poses;
 }
 
-TextSlamPlateResult TextSlam::AddPlate(const PlateSighting& sighting, const Pose2D& odometry_pose) {
-  ValidatePlateSighting(sighting);
+TextSlamPlateResult TextSlam::AddPlate(const PlateReading& sighting, const Pose2D& odometry_pose) {
+  if (const std::string bad = ValidatePlateReading(sighting); !bad.empty()) {
+    throw std::invalid_argument("TextSlam::AddPlate: " + bad);
+  }
   ValidatePose(odometry_pose, "TextSlam::AddPlate");
   TextSlamPlateResult result;
   if (!room_grammar_.Accepts(sighting.text)) {

@@ -80,10 +80,10 @@ void AddOptions(CLI::App* app, Args* args) {
   });
 }
 
-// An MRPT scan as the core's RangeScan: MRPT's beam angles (getScanAngle), invalid beams at the device's
+// An MRPT scan as the core's LaserScan: MRPT's beam angles (getScanAngle), invalid beams at the device's
 // maximum range as no echo (+inf), other invalid beams skipped (NaN); the mounting's x, y, yaw.
-dl::RangeScan ToRangeScan(const mrpt::obs::CObservation2DRangeScan& obs) {
-  dl::RangeScan scan;
+dl::LaserScan ToLaserScan(const mrpt::obs::CObservation2DRangeScan& obs) {
+  dl::LaserScan scan;
   const std::size_t n = obs.getScanSize();
   scan.angle_min_rad = obs.getScanAngle(0);
   scan.angle_increment_rad = n > 1 ? obs.getScanAngle(1) - obs.getScanAngle(0) : 0.0;
@@ -150,7 +150,7 @@ int Run(const Args& args) {
       const auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(obs);
       if (!scan || scan->getScanSize() < 2) continue;
       if (!args.sensor_label.empty() && scan->sensorLabel != args.sensor_label) continue;
-      session.AddScan(static_cast<double>(pairs), odometry, ToRangeScan(*scan));
+      session.AddScan(static_cast<double>(pairs), odometry, ToLaserScan(*scan));
       ++scans;
       break;  // one scan per step, as MRPT's RBPF inserts one sensory frame per action
     }

@@ -134,7 +134,7 @@ int Run(const Args& args) {
                                     : camera.Render(pose, args.speed_mps, args.yaw_rate_rps, rng));
   if (!args.topdown_out.empty()) {
     const dl::LaserSimulator laser(world.sensors.laser);
-    const dl::SimulatedScan scan = laser.Simulate(world, pose, rng);
+    const dl::LaserScan scan = laser.Simulate(world, pose, rng);
     dl::TopDownView view(world);
     view.DrawScan(scan, pose.Compose(laser.MountPose()));
     view.DrawCameraFov(camera, pose);

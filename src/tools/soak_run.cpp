@@ -140,7 +140,7 @@ class Soak {
     if (faults_.enabled() && (route_.empty() || Norm(route_.back() - sim_.true_pose().Position()) >= 0.25)) {
       route_.push_back(sim_.true_pose().Position());
     }
-    scan_ = ToLocalizationScan(sim_.Scan(), sim_.world().sensors.laser);
+    scan_ = sim_.Scan();
     VelocityCommand cmd = sweep_->Step(scan_.ranges_m, scan_.angle_min_rad, scan_.angle_increment_rad, sim_.odom_pose(),
                                       sim_.time_s());
     if (sweep_->phase() == SweepPhase::kDone) {  // back and forth: a new sweep as soon as one ends
@@ -242,7 +242,7 @@ class Soak {
   int restarts_ = 0;
   std::vector<Vec2> route_;  // true positions driven, every 0.25 m (where a kidnap may put the robot)
   double camera_yaw_rad_ = 0.0;
-  LocalizationScan scan_;  // the latest simulated scan (the sweep drives on it)
+  LaserScan scan_;  // the latest simulated scan (the sweep drives on it)
   SoakWindow window_;
   long long error_samples_ = 0;
   std::vector<std::string> first_errors_;

@@ -18,7 +18,7 @@ constexpr double kDeg = M_PI / 180.0;
 Wall MakeWall(const char* id, Vec2 a, Vec2 b, bool corridor_left) { return {id, {a, b}, corridor_left, {200, 200, 200}}; }
 
 ContourSteeringResult SteerAt(const World& world, const Pose2D& pose, ContourSteeringOptions options = {}) {
-  const SimulatedScan scan = LaserSimulator(LaserOptions{}).CastExact(world, pose);
+  const LaserScan scan = LaserSimulator(LaserOptions{}).CastExact(world, pose);
   return ContourSteering(options).Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad);
 }
 
@@ -45,7 +45,7 @@ TEST(ContourSteering, BesideAStraightWallAtTheRightDistanceDrivesStraightAtCruis
 
 TEST(ContourSteering, ASpuriousReturnInItsLaneDoesNotMakeItTurn) {
   const World world = test::RectangleCorridor(12, 2);
-  SimulatedScan scan = LaserSimulator(LaserOptions{}).CastExact(world, {4, 0.6, 0});
+  LaserScan scan = LaserSimulator(LaserOptions{}).CastExact(world, {4, 0.6, 0});
   const std::size_t ahead = static_cast<std::size_t>(std::lround(-scan.angle_min_rad / scan.angle_increment_rad));
   scan.ranges_m[ahead] = 0.5f;
   const ContourSteeringResult r = ContourSteering(ContourSteeringOptions{}).Step(scan.ranges_m, scan.angle_min_rad,
@@ -127,7 +127,7 @@ TEST(ContourSteering, LeavesALobbyFromALiftDoorAndFollowsTheCorridorWall) {
   double east_along_courtyard_m = -1e9;  // the farthest x reached 0.6 ± 0.15 m from the courtyard wall
   for (int step = 0; sim.time_s() < 60.0; ++step) {
     if (step % 10 == 0) {
-      const SimulatedScan scan = sim.Scan();
+      const LaserScan scan = sim.Scan();
       const VelocityCommand cmd = steering.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad).command;
       sim.SetCommand(cmd.linear_mps, cmd.angular_rps);
     }
@@ -152,7 +152,7 @@ TEST(ContourSteering, BoxedInTurnsOnTheSpot) {
 
 TEST(ContourSteering, IgnoresNonFiniteRanges) {
   const World world = test::RectangleCorridor(12, 2);
-  SimulatedScan scan = LaserSimulator(LaserOptions{}).CastExact(world, {4, 0.6, 0});
+  LaserScan scan = LaserSimulator(LaserOptions{}).CastExact(world, {4, 0.6, 0});
   for (std::size_t i = 0; i < scan.ranges_m.size(); i += 7) scan.ranges_m[i] = std::nanf("");
   scan.ranges_m[3] = INFINITY;
   const ContourSteeringResult r = ContourSteering({}).Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad);

@@ -34,7 +34,7 @@ World CorridorWithTwoPlates() {
 }
 
 // A person in the scan: a 0.4 m wide body (flat front) 0.5 m straight ahead.
-void AddPersonAhead(SimulatedScan* scan) {
+void AddPersonAhead(LaserScan* scan) {
   for (std::size_t i = 0; i < scan->ranges_m.size(); ++i) {
     const double a = scan->angle_min_rad + static_cast<double>(i) * scan->angle_increment_rad;
     if (std::cos(a) > 0 && std::fabs(std::tan(a)) * 0.5 <= 0.2) scan->ranges_m[i] = static_cast<float>(0.5 / std::cos(a));
@@ -62,7 +62,7 @@ SweepRun RunSweep(const World& world, const CorridorSweepOptions& options, doubl
   const CameraIntrinsics& k = sim.camera().intrinsics();
   for (int step = 0; sim.time_s() < max_time_s; ++step) {
     if (step % 10 == 0) {
-      const SimulatedScan scan = sim.Scan();
+      const LaserScan scan = sim.Scan();
       const VelocityCommand cmd =
           sweep.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, sim.odom_pose(), sim.time_s());
       if (sweep.phase() != run.phases.back()) {
@@ -159,7 +159,7 @@ TEST(CorridorSweep, EndsDoneWithAZeroCommandAtTheSecondEndAndResetStartsAgain) {
   options.end_confirm_s = 0.0;  // each end at once (the wait is the next test's)
   CorridorSweep sweep(options);
   auto step = [&](const Pose2D& true_pose, double odom_yaw_rad) {
-    const SimulatedScan scan = laser.CastExact(world, true_pose);
+    const LaserScan scan = laser.CastExact(world, true_pose);
     return sweep.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, {0.0, 0.0, odom_yaw_rad}, 0.0);
   };
   VelocityCommand cmd = step({7.4, 0.6, 0.0}, 0.0);  // 0.6 m before the east wall: the first leg ends
@@ -192,7 +192,7 @@ TEST(CorridorSweep, WaitsForSomethingAheadToClearBeforeEndingALeg) {
   options.end_confirm_s = 4.0;
   CorridorSweep sweep(options);
   auto step = [&](const Pose2D& true_pose, double time_s, bool person_ahead) {
-    SimulatedScan scan = laser.CastExact(world, true_pose);
+    LaserScan scan = laser.CastExact(world, true_pose);
     if (person_ahead) AddPersonAhead(&scan);
     return sweep.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, {0.0, 0.0, 0.0}, time_s);
   };
@@ -222,7 +222,7 @@ TEST(CorridorSweep, WaitsForSomethingAheadToClearBeforeEndingALeg) {
 
 TEST(CorridorSweep, APersonWhoNeverLeavesTheLaneEndsTheLegAfterTheLongWait) {
   const World world = test::RectangleCorridor(8.0, 2.0);
-  SimulatedScan scan = LaserSimulator(LaserOptions{}).CastExact(world, {3.0, 0.6, 0.0});
+  LaserScan scan = LaserSimulator(LaserOptions{}).CastExact(world, {3.0, 0.6, 0.0});
   AddPersonAhead(&scan);
   CorridorSweep sweep(CorridorSweepOptions{});
   for (double t = 0.0; t < 29.95; t += 0.1) sweep.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, {}, t);
@@ -234,9 +234,9 @@ TEST(CorridorSweep, APersonWhoNeverLeavesTheLaneEndsTheLegAfterTheLongWait) {
 TEST(BlockingWidth, AnEndWallSpansTheCorridorAPersonDoesNot) {
   const World world = test::RectangleCorridor(8.0, 2.0);
   const LaserSimulator laser(LaserOptions{});
-  const SimulatedScan end = laser.CastExact(world, {7.4, 0.6, 0.0});  // the east wall 0.6 m ahead
+  const LaserScan end = laser.CastExact(world, {7.4, 0.6, 0.0});  // the east wall 0.6 m ahead
   EXPECT_NEAR(BlockingWidth(end.ranges_m, end.angle_min_rad, end.angle_increment_rad), 2.0, 0.05);
-  SimulatedScan person = laser.CastExact(world, {3.0, 1.0, 0.0});  // mid-corridor
+  LaserScan person = laser.CastExact(world, {3.0, 1.0, 0.0});  // mid-corridor
   AddPersonAhead(&person);
   EXPECT_NEAR(BlockingWidth(person.ranges_m, person.angle_min_rad, person.angle_increment_rad), 0.4, 0.05);
   // Nothing ahead within ±45°: 0.
@@ -250,7 +250,7 @@ TEST(CorridorSweep, WithNoWallBesideItHoldsTheLegsWallDirection) {
   const World world = test::RectangleCorridor(8.0, 2.0);
   const LaserSimulator laser(LaserOptions{});
   CorridorSweep sweep(CorridorSweepOptions{});
-  const SimulatedScan along = laser.CastExact(world, {3.0, 0.6, 0.0});
+  const LaserScan along = laser.CastExact(world, {3.0, 0.6, 0.0});
   sweep.Step(along.ranges_m, along.angle_min_rad, along.angle_increment_rad, {0.0, 0.0, 0.0}, 0.0);
   sweep.Step(along.ranges_m, along.angle_min_rad, along.angle_increment_rad, {0.1, 0.0, 0.0}, 0.1);
   ASSERT_TRUE(sweep.last_observation().wall_found);
@@ -283,7 +283,7 @@ TEST(CorridorSweep, SweepsTheWholeRealisticCorridorPastGlassAndPeople) {
         static_cast<int>(std::lround(1.0 / (world.sensors.laser.rate_hz * sim_options.physics_step_s)));
     for (long long step = 0; sim.time_s() < 400.0 && sweep.phase() != SweepPhase::kDone; ++step) {
       if (step % steps_per_scan == 0) {
-        const SimulatedScan scan = sim.Scan();
+        const LaserScan scan = sim.Scan();
         const VelocityCommand cmd =
             sweep.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, sim.odom_pose(), sim.time_s());
         if (sweep.phase() == SweepPhase::kTurnAround && turn_x_m == 0.0) turn_x_m = sim.true_pose().x_m;
@@ -311,7 +311,7 @@ TEST(CorridorSweep, StartedAskewFollowsTheWallToTheFarEnd) {
   double max_y_m = 0.0;
   for (long long step = 0; sim.time_s() < 150.0 && sweep.phase() == SweepPhase::kFollowOut; ++step) {
     if (step % 10 == 0) {
-      const SimulatedScan scan = sim.Scan();
+      const LaserScan scan = sim.Scan();
       const VelocityCommand cmd =
           sweep.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, sim.odom_pose(), sim.time_s());
       sim.SetCommand(cmd.linear_mps, cmd.angular_rps);

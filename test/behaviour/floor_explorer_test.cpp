@@ -80,7 +80,7 @@ ExploreRun Explore(const World& world, FloorExplorerOptions options, double max_
       reported.pop_front();
     }
     if (step % 10 == 0) {
-      const SimulatedScan scan = sim.Scan();
+      const LaserScan scan = sim.Scan();
       const VelocityCommand cmd = explorer.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad,
                                                 sim.odom_pose(), sim.time_s());
       if (explorer.pass() != last_pass || explorer.phase() == ExplorePhase::kDone) {
@@ -205,7 +205,7 @@ TEST(FloorExplorer, APlateReadAgainSoonAfterIsNotARevisit) {
   options.revisit_plates = 1;
   FloorExplorer explorer(options);
   const World world = test::RectangleCorridor(40, 2);
-  const SimulatedScan scan = LaserSimulator(LaserOptions{}).CastExact(world, {5, 0.6, 0});
+  const LaserScan scan = LaserSimulator(LaserOptions{}).CastExact(world, {5, 0.6, 0});
   explorer.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, {0, 0, 0});
   explorer.OnPlateRead("E14-295");
   explorer.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, {5, 0, 0});
@@ -222,9 +222,9 @@ TEST(FloorExplorer, APlateReadAgainSoonAfterIsNotARevisit) {
 // Scans of a 40 m corridor seen along it (the steering drives straight on) and at 0.5 rad to it (the
 // steering turns, as in a corner); Drive feeds one of them at every 0.1 m, 0.4 m/s, as the pose goes along x.
 struct ScanFixture {
-  SimulatedScan straight = LaserSimulator(LaserOptions{}).CastExact(test::RectangleCorridor(40, 2), {5, 0.6, 0});
-  SimulatedScan corner = LaserSimulator(LaserOptions{}).CastExact(test::RectangleCorridor(40, 2), {5, 0.6, 0.5});
-  void Drive(FloorExplorer& explorer, const SimulatedScan& scan, double from_m, double to_m, double t0_s) const {
+  LaserScan straight = LaserSimulator(LaserOptions{}).CastExact(test::RectangleCorridor(40, 2), {5, 0.6, 0});
+  LaserScan corner = LaserSimulator(LaserOptions{}).CastExact(test::RectangleCorridor(40, 2), {5, 0.6, 0.5});
+  void Drive(FloorExplorer& explorer, const LaserScan& scan, double from_m, double to_m, double t0_s) const {
     for (double x = from_m; x <= to_m + 1e-9; x += 0.1) {
       explorer.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, {x, 0, 0}, t0_s + x / 0.4);
     }

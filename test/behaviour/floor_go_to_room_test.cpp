@@ -43,7 +43,7 @@ DriveRun Drive(const World& world, FloorGoToRoom* go, double teleport_at_s = -1,
       teleported = true;
     }
     if (step % 10 == 0) {
-      const SimulatedScan scan = sim.Scan();
+      const LaserScan scan = sim.Scan();
       const VelocityCommand cmd =
           go->Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, sim.true_pose(), sim.time_s());
       if (!go->active()) break;
@@ -92,7 +92,7 @@ TEST(FloorGoToRoom, RefusesAGoalInsideAWallWithThePlannersReason) {
   EXPECT_FALSE(go.Start(GoalAt({4.0, 4.0, 0.0}), world.start_pose));
   EXPECT_EQ(go.state(), FloorGoToRoomState::kRefused);
   EXPECT_NE(go.Status().find("refused: room 105: goal inside an obstacle"), std::string::npos) << go.Status();
-  const SimulatedScan scan = Simulator(world, SimulatorOptions{}).Scan();
+  const LaserScan scan = Simulator(world, SimulatorOptions{}).Scan();
   const VelocityCommand cmd =
       go.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, world.start_pose, 0.0);
   EXPECT_EQ(cmd.linear_mps, 0.0);

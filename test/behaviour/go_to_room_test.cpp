@@ -50,7 +50,7 @@ DriveRun Drive(Simulator* sim, GoToRoom* go, bool use_odometry, double max_time_
   const double end_s = sim->time_s() + max_time_s;
   for (int step = 0; sim->time_s() < end_s; ++step) {
     if (step % 10 == 0) {
-      const SimulatedScan scan = sim->Scan();
+      const LaserScan scan = sim->Scan();
       const Pose2D pose = use_odometry ? sim->odom_pose() : sim->true_pose();
       const VelocityCommand cmd = go->Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, pose);
       if (go->state() != run.states.back()) run.states.push_back(go->state());
@@ -126,7 +126,7 @@ TEST(GoToRoom, TurnsAroundFirstWhenTheGoalIsBehind) {
 PlateOffset DriveByEq15(const World& world) {
   Simulator sim(world, SimulatorOptions{});
   sim.Teleport({3.0, 1.4, M_PI});
-  PlateReading reading;
+  MatchedPlateReading reading;
   reading.landmark = Planner().map().Find("102").front();
   reading.odom_pose = sim.odom_pose();
   reading.plate_on_left = true;

@@ -160,7 +160,7 @@ TEST(PathFollower, InTheSimulatorDrivesRoundTheCornerOfAnLCorridorToTheGoal) {
   double closest_to_corner_m = 1e9;
   for (int step = 0; sim.time_s() < 120.0; ++step) {
     if (step % 10 == 0) {
-      const SimulatedScan scan = sim.Scan();
+      const LaserScan scan = sim.Scan();
       const VelocityCommand cmd = follower.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad,
                                                 sim.true_pose());
       if (!follower.active()) break;

@@ -58,8 +58,8 @@ TEST(AdjacentRoute, PlatesOnDifferentWallsHaveNoRouteAndTheReasonSaysSo) {
 }
 
 // The robot read "104" on its left while driving with odom heading 1.0 rad (odom is not aligned with map).
-PlateReading ReadingOf104(bool plate_on_left) {
-  PlateReading reading;
+MatchedPlateReading ReadingOf104(bool plate_on_left) {
+  MatchedPlateReading reading;
   reading.landmark = 1;
   reading.odom_pose = {10.0, -5.0, 1.0};
   reading.plate_on_left = plate_on_left;
@@ -106,7 +106,7 @@ TEST(PlanFromReading, ARequestWithoutTheSeparatorsFindsThePrintedRoom) {
                    Plate("E14-295A", 9.0, 0.0, M_PI / 2, "south")};
   ComputeAdjacentDistances(&map);
   const RoomGoalPlanner planner(RoomGoalPlannerOptions{}, map, "e14");
-  PlateReading reading;
+  MatchedPlateReading reading;
   reading.landmark = 0;
   reading.plate_on_left = false;  // a south plate on the right: driving east, towards +x
   const RoomGoalResult result = PlanFromReading(planner, "E14295", reading);

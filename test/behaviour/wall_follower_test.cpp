@@ -19,7 +19,7 @@ Pose2D DriveUntilStopped(const World& world, const WallFollower& follower, Pose2
   const LaserSimulator laser(LaserOptions{});
   std::mt19937_64 rng(5);
   for (int i = 0; i < max_steps; ++i) {
-    const SimulatedScan scan = laser.Simulate(world, pose, rng);
+    const LaserScan scan = laser.Simulate(world, pose, rng);
     const CorridorObservation obs = follower.Observe(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad);
     *width_m = obs.width_m;
     const VelocityCommand cmd = follower.Command(obs, state);
@@ -35,7 +35,7 @@ Pose2D DriveUntilStopped(const World& world, const WallFollower& follower, Pose2
 TEST(WallFollower, ObservesDistanceAngleAndCorridorWidth) {
   const World world = test::RectangleCorridor(20.0, 1.85);
   const WallFollower follower(WallFollowerOptions{});
-  const SimulatedScan scan = LaserSimulator(LaserOptions{}).CastExact(world, {5.0, 0.5, 0.1});
+  const LaserScan scan = LaserSimulator(LaserOptions{}).CastExact(world, {5.0, 0.5, 0.1});
   const CorridorObservation obs = follower.Observe(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad);
   ASSERT_TRUE(obs.wall_found);
   EXPECT_NEAR(obs.wall_distance_m, 0.5, 0.01);
@@ -46,7 +46,7 @@ TEST(WallFollower, ObservesDistanceAngleAndCorridorWidth) {
   // isolated returns, ignored; the end wall 15 m ahead is what the robot sees ahead.
   EXPECT_NEAR(obs.front_distance_m, 15.0, 0.1);
   // Heading 0.3 rad: the wall is met 3.5-4.4 m ahead and seen well enough.
-  const SimulatedScan steep = LaserSimulator(LaserOptions{}).CastExact(world, {5.0, 0.5, 0.3});
+  const LaserScan steep = LaserSimulator(LaserOptions{}).CastExact(world, {5.0, 0.5, 0.3});
   const CorridorObservation towards = follower.Observe(steep.ranges_m, steep.angle_min_rad, steep.angle_increment_rad);
   EXPECT_GT(towards.front_distance_m, (1.35 - 0.3) / std::sin(0.3) - 0.1);
   EXPECT_LT(towards.front_distance_m, 1.35 / std::sin(0.3));
@@ -93,7 +93,7 @@ TEST(WallFollower, IgnoresNonFiniteRangesAndReportsNoWall) {
 TEST(WallFollower, ASpuriousReturnStraightAheadIsNotTheCorridorsEnd) {
   const World world = test::RectangleCorridor(20.0, 1.85);
   const WallFollower follower(WallFollowerOptions{});
-  SimulatedScan scan = LaserSimulator(LaserOptions{}).CastExact(world, {5.0, 0.6, 0.0});
+  LaserScan scan = LaserSimulator(LaserOptions{}).CastExact(world, {5.0, 0.6, 0.0});
   const std::size_t ahead = static_cast<std::size_t>(std::lround(-scan.angle_min_rad / scan.angle_increment_rad));
   scan.ranges_m[ahead] = 0.5f;  // one beam: dust, a reflection
   CorridorObservation obs = follower.Observe(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad);

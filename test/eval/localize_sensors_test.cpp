@@ -9,29 +9,6 @@
 namespace doorplate_localization {
 namespace {
 
-TEST(ToLocalizationScan, CopiesTheGeometryAndTakesTheMountingPoseFromTheLaserOptions) {
-  SimulatedScan sim;
-  sim.angle_min_rad = -1.0;
-  sim.angle_increment_rad = 0.5;
-  sim.min_range_m = 0.2;
-  sim.max_range_m = 12.0;
-  sim.ranges_m = {1.0f, std::numeric_limits<float>::infinity()};
-  LaserOptions laser;
-  laser.mount_x_m = 0.1;
-  laser.mount_y_m = -0.05;
-  laser.mount_yaw_rad = 0.2;
-  const LocalizationScan scan = ToLocalizationScan(sim, laser);
-  EXPECT_EQ(scan.angle_min_rad, -1.0);
-  EXPECT_EQ(scan.angle_increment_rad, 0.5);
-  EXPECT_EQ(scan.min_range_m, 0.2);
-  EXPECT_EQ(scan.max_range_m, 12.0);
-  EXPECT_EQ(scan.ranges_m, sim.ranges_m);
-  EXPECT_EQ(scan.laser_pose.x_m, 0.1);
-  EXPECT_EQ(scan.laser_pose.y_m, -0.05);
-  EXPECT_EQ(scan.laser_pose.theta_rad, 0.2);
-  EXPECT_EQ(ValidateLocalizationScan(scan), "");
-}
-
 TEST(ToPlateReading, ComposesTheCameraYawWithTheReportBearing) {
   PlateReport report;
   report.text = "214";

@@ -14,8 +14,8 @@ namespace {
 constexpr double kDeg = M_PI / 180.0;
 
 // A 360-beam scan of `walls` from `laser` (map frame), exact or with Gaussian noise; +inf where no wall.
-RangeScan ScanOf(const std::vector<Segment>& walls, const Pose2D& laser, double noise_m, std::mt19937_64& rng) {
-  RangeScan scan;
+LaserScan ScanOf(const std::vector<Segment>& walls, const Pose2D& laser, double noise_m, std::mt19937_64& rng) {
+  LaserScan scan;
   scan.angle_min_rad = -M_PI;
   scan.angle_increment_rad = 2 * M_PI / 360;
   scan.min_range_m = 0.01;
@@ -82,7 +82,7 @@ TEST(ReferenceMap, NeedsFinishBetweenDrawingAndExpecting) {
   ReferenceMap map(ReferenceMapOptions{});
   EXPECT_THROW(map.Expect({0, 0}, 0.0, 1.0), std::logic_error);
   map.Finish();
-  EXPECT_THROW(map.AddScan({}, RangeScan{}), std::logic_error);
+  EXPECT_THROW(map.AddScan({}, LaserScan{}), std::logic_error);
 }
 
 TEST(ReferenceMap, BadOptionsAreNamed) {

@@ -16,7 +16,7 @@ class BeamModelTest : public ::testing::Test {
   std::shared_ptr<LocalizationGrid> room_ = std::make_shared<LocalizationGrid>(test::AsymmetricRoom());
   const Pose2D truth_{1.5, 2.5, 0.4};
 
-  std::vector<double> Score(BeamModel& model, const LocalizationScan& scan, const std::vector<Pose2D>& poses) {
+  std::vector<double> Score(BeamModel& model, const LaserScan& scan, const std::vector<Pose2D>& poses) {
     std::vector<Particle> ps;
     for (const Pose2D& p : poses) ps.push_back({p, 1.0});
     std::vector<double> ll;
@@ -42,7 +42,7 @@ TEST_F(BeamModelTest, BeamProbabilityIsAmclsFourPartMixture) {
 
 TEST_F(BeamModelTest, PrefersTheTruePoseOverShiftedAndTurnedOnes) {
   std::mt19937_64 rng(5);
-  const LocalizationScan scan = test::SyntheticScan(*room_, truth_, &rng);
+  const LaserScan scan = test::SyntheticScan(*room_, truth_, &rng);
   for (BeamCombination c : {BeamCombination::kAmclCubeSum, BeamCombination::kProduct}) {
     BeamModelOptions o;
     o.combination = c;
@@ -56,7 +56,7 @@ TEST_F(BeamModelTest, PrefersTheTruePoseOverShiftedAndTurnedOnes) {
 TEST_F(BeamModelTest, CountsNoEchoReadingsAsMaxRange) {
   // With a 3 m laser, beams along the room's long axis have no echo (+inf). A pose where the map agrees
   // (nothing within 3 m along those beams) must beat one where the map has a wall within range.
-  const LocalizationScan scan = test::SyntheticScan(*room_, truth_, nullptr, 0.0, 3.0);
+  const LaserScan scan = test::SyntheticScan(*room_, truth_, nullptr, 0.0, 3.0);
   int no_echo = 0;
   for (float r : scan.ranges_m) no_echo += std::isinf(r);
   ASSERT_GT(no_echo, 30);
@@ -67,7 +67,7 @@ TEST_F(BeamModelTest, CountsNoEchoReadingsAsMaxRange) {
   EXPECT_GT(ll[0], ll[1]);
   // Replacing the +inf readings by NaN (unusable) removes their evidence: the wrong pose, which has walls
   // within range along those beams, is no longer penalized for them.
-  LocalizationScan stripped = scan;
+  LaserScan stripped = scan;
   for (float& r : stripped.ranges_m) {
     if (std::isinf(r)) r = std::nanf("");
   }

@@ -157,7 +157,7 @@ TEST(BuildingSession, AOneFloorBuildingGivesTheSameEstimatesAsItsTextAmclSession
   for (double x = 2.0; x <= 12.0 + 1e-9; x += 0.2) {
     const Pose2D truth{x, 1.0, 0.0};
     t += 0.5;
-    const LocalizationScan scan = test::SyntheticScan(*b.corridor.grid, truth);
+    const LaserScan scan = test::SyntheticScan(*b.corridor.grid, truth);
     building.AddScan(t, {x, 0.0, 0.0}, scan);
     plain.AddScan(t, {x, 0.0, 0.0}, scan);
     const int plate = test::PlateComingAbeam(*one->floors[0].text_map, {x - 0.2, 1.0, 0.0}, truth);

@@ -55,7 +55,7 @@ TEST(HasLineOfSight, IsBlockedByTheBoxButNotByTheTargetWall) {
 
 TEST(CastScan, MarksBeamsWithoutEchoAsInfinity) {
   const LocalizationGrid room(test::AsymmetricRoom());
-  const LocalizationScan s = CastScan(room, {1.0, 2.0, 0.0}, test::ScanGeometry(2.0), 360);
+  const LaserScan s = CastScan(room, {1.0, 2.0, 0.0}, test::ScanGeometry(2.0), 360);
   ASSERT_EQ(s.ranges_m.size(), 360u);
   EXPECT_TRUE(std::isinf(s.ranges_m[180]));       // straight ahead: the wall is 4.9 m from the laser
   EXPECT_NEAR(s.ranges_m[0], 1.1, 0.05);          // straight back: the west wall, 1 m + 0.1 m mount

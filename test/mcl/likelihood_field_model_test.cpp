@@ -16,7 +16,7 @@ class LikelihoodFieldModelTest : public ::testing::Test {
   std::shared_ptr<LocalizationGrid> room_ = std::make_shared<LocalizationGrid>(test::AsymmetricRoom());
   const Pose2D truth_{1.5, 2.5, 0.4};
 
-  std::vector<double> Score(LikelihoodFieldModel& model, const LocalizationScan& scan,
+  std::vector<double> Score(LikelihoodFieldModel& model, const LaserScan& scan,
                             const std::vector<Pose2D>& poses) {
     std::vector<Particle> ps;
     for (const Pose2D& p : poses) ps.push_back({p, 1.0});
@@ -48,7 +48,7 @@ TEST(LikelihoodFieldModel, UnknownCellsMeasureTheirDistanceToOccupiedOnesLikeAmc
 
 TEST_F(LikelihoodFieldModelTest, PrefersTheTruePoseOverShiftedAndTurnedOnes) {
   std::mt19937_64 rng(5);
-  const LocalizationScan scan = test::SyntheticScan(*room_, truth_, &rng);
+  const LaserScan scan = test::SyntheticScan(*room_, truth_, &rng);
   for (BeamCombination c : {BeamCombination::kAmclCubeSum, BeamCombination::kProduct}) {
     LikelihoodFieldModelOptions o;
     o.combination = c;
@@ -60,9 +60,9 @@ TEST_F(LikelihoodFieldModelTest, PrefersTheTruePoseOverShiftedAndTurnedOnes) {
 }
 
 TEST_F(LikelihoodFieldModelTest, UsesTheLaserMountingPose) {
-  LocalizationScan geometry = test::ScanGeometry();
+  LaserScan geometry = test::ScanGeometry();
   geometry.laser_pose = {0.3, 0.1, 0.5};
-  LocalizationScan scan = CastScan(*room_, truth_, geometry, 360);
+  LaserScan scan = CastScan(*room_, truth_, geometry, 360);
   LikelihoodFieldModel model(room_, {});
   const double right_mount = Score(model, scan, {truth_})[0];
   scan.laser_pose = {};  // pretend the laser sits at base_link
@@ -70,7 +70,7 @@ TEST_F(LikelihoodFieldModelTest, UsesTheLaserMountingPose) {
 }
 
 TEST_F(LikelihoodFieldModelTest, SkipsMaxRangeAndInvalidReadingsAndUsesLaserMaxBeams) {
-  LocalizationScan scan = test::ScanGeometry();
+  LaserScan scan = test::ScanGeometry();
   scan.ranges_m.assign(360, std::numeric_limits<float>::infinity());
   scan.ranges_m[7] = std::nanf("");
   LikelihoodFieldModel model(room_, {});
@@ -83,7 +83,7 @@ TEST_F(LikelihoodFieldModelTest, SkipsMaxRangeAndInvalidReadingsAndUsesLaserMaxB
 }
 
 TEST_F(LikelihoodFieldModelTest, BeamSkippingIgnoresBeamsOnAnUnmappedObstacle) {
-  LocalizationScan scan = test::SyntheticScan(*room_, truth_);
+  LaserScan scan = test::SyntheticScan(*room_, truth_);
   for (int i = 170; i < 190; ++i) scan.ranges_m[i] = 0.5f;  // a person 0.5 m ahead, not in the map
   LikelihoodFieldModelOptions o;
   o.do_beamskip = true;

@@ -11,8 +11,8 @@ namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-LocalizationScan Scan(int beams, float range = 2.0f) {
-  LocalizationScan s;
+LaserScan Scan(int beams, float range = 2.0f) {
+  LaserScan s;
   s.angle_min_rad = -M_PI;
   s.angle_increment_rad = 2.0 * M_PI / beams;
   s.min_range_m = 0.1;
@@ -31,7 +31,7 @@ TEST(ClassifyRange, FollowsRep117) {
 }
 
 TEST(SelectBeams, SpreadsLaserMaxBeamsEvenlyIncludingBothEnds) {
-  const LocalizationScan s = Scan(360);
+  const LaserScan s = Scan(360);
   const auto beams = SelectBeams(s, {});  // laser_max_beams 60
   ASSERT_EQ(beams.size(), 60u);
   EXPECT_NEAR(beams.front().angle_rad, -M_PI, 1e-12);
@@ -52,7 +52,7 @@ TEST(SelectBeams, UsesEveryBeamOfAShortScan) {
 }
 
 TEST(SelectBeams, DropsInvalidBeamsAndMarksMaxRangeOnes) {
-  LocalizationScan s = Scan(4);
+  LaserScan s = Scan(4);
   s.ranges_m = {std::nanf(""), kInf, 3.0f, -kInf};
   const auto beams = SelectBeams(s, {});
   ASSERT_EQ(beams.size(), 2u);
@@ -63,7 +63,7 @@ TEST(SelectBeams, DropsInvalidBeamsAndMarksMaxRangeOnes) {
 }
 
 TEST(SelectBeams, RangeOverridesNarrowTheScansInterval) {
-  LocalizationScan s = Scan(2);
+  LaserScan s = Scan(2);
   s.ranges_m = {6.0f, 0.3f};
   BeamSelectionOptions o;
   o.laser_max_range_m = 5.0;  // amcl's laser_max_range
@@ -76,7 +76,7 @@ TEST(SelectBeams, RangeOverridesNarrowTheScansInterval) {
 
 TEST(ValidateLocalizationScan, NamesTheBadField) {
   EXPECT_EQ(ValidateLocalizationScan(Scan(4)), "");
-  LocalizationScan s = Scan(4);
+  LaserScan s = Scan(4);
   s.angle_increment_rad = 0.0;
   EXPECT_NE(ValidateLocalizationScan(s).find("angle_increment_rad"), std::string::npos);
   s = Scan(4);
@@ -89,25 +89,9 @@ TEST(ValidateLocalizationScan, NamesTheBadField) {
   s = Scan(4);
   s.ranges_m.assign(100001, 1.0f);  // issue 18: more than limits::kMaxScanBeams
   EXPECT_EQ(ValidateLocalizationScan(s),
-            "LocalizationScan.ranges_m: 100001 beams, more than the limit of 100000 (limits::kMaxScanBeams)");
+            "LaserScan.ranges_m: 100001 beams, more than the limit of 100000 (limits::kMaxScanBeams)");
   s.ranges_m.resize(100000);
   EXPECT_EQ(ValidateLocalizationScan(s), "");
-}
-
-// --- PlateReadingAt (plate ranges: sensors/plate_range.h, test/sensors/plate_range_test.cpp) ---
-
-TEST(PlateReadingAt, WrapsTheBearingKeepsANonFiniteOneAndLeavesTheCameraSideUnknown) {
-  const PlateReading r = PlateReadingAt("214", 0.8, 3.0 * M_PI / 2.0, 1.4);
-  EXPECT_EQ(r.text, "214");
-  EXPECT_EQ(r.confidence, 0.8);
-  EXPECT_NEAR(r.bearing_rad, -M_PI / 2.0, 1e-12);
-  EXPECT_EQ(r.range_m, 1.4);
-  EXPECT_EQ(r.camera_side, CameraSide::kUnknown);
-  EXPECT_EQ(ValidatePlateReading(r), "");
-  const PlateReading bad = PlateReadingAt("214", 0.8, std::numeric_limits<double>::infinity(), std::nullopt);
-  EXPECT_TRUE(std::isinf(bad.bearing_rad));
-  EXPECT_FALSE(bad.range_m.has_value());
-  EXPECT_NE(ValidatePlateReading(bad), "");
 }
 
 }  // namespace

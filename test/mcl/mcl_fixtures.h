@@ -13,7 +13,7 @@
 #include "doorplate_localization/maps/text_map.h"
 #include "doorplate_localization/mcl/grid_ray_caster.h"
 #include "doorplate_localization/mcl/localization_grid.h"
-#include "doorplate_localization/mcl/plate_reading.h"
+#include "doorplate_localization/sensors/plate_reading.h"
 #include "doorplate_localization/mcl/localization_scan.h"
 
 namespace doorplate_localization::test {
@@ -106,8 +106,8 @@ inline SymmetricCorridor MakeSymmetricCorridor(double length_m = 40.0, double wi
 }
 
 // 360 beams over the full circle, 0.1 .. 8 m, laser 0.1 m ahead of base_link.
-inline LocalizationScan ScanGeometry(double max_range_m = 8.0) {
-  LocalizationScan s;
+inline LaserScan ScanGeometry(double max_range_m = 8.0) {
+  LaserScan s;
   s.angle_min_rad = -M_PI;
   s.angle_increment_rad = 2.0 * M_PI / 360.0;
   s.min_range_m = 0.1;
@@ -117,9 +117,9 @@ inline LocalizationScan ScanGeometry(double max_range_m = 8.0) {
 }
 
 // A ray-cast scan from `robot`, with Gaussian range noise when `rng` is given.
-inline LocalizationScan SyntheticScan(const LocalizationGrid& grid, const Pose2D& robot, std::mt19937_64* rng = nullptr,
+inline LaserScan SyntheticScan(const LocalizationGrid& grid, const Pose2D& robot, std::mt19937_64* rng = nullptr,
                                double noise_m = 0.01, double max_range_m = 8.0) {
-  LocalizationScan scan = CastScan(grid, robot, ScanGeometry(max_range_m), 360);
+  LaserScan scan = CastScan(grid, robot, ScanGeometry(max_range_m), 360);
   if (rng != nullptr) {
     std::normal_distribution<double> noise(0.0, noise_m);
     for (float& r : scan.ranges_m) {

@@ -28,7 +28,7 @@ struct Fixture {
   TextAmclSession Make(const TextAmclSessionOptions& o, bool with_text_map = true) const {
     return TextAmclSession(o, corridor.occupancy, with_text_map ? corridor.text_map : nullptr);
   }
-  LocalizationScan ScanAt(const Pose2D& p) const { return test::SyntheticScan(*corridor.grid, p); }
+  LaserScan ScanAt(const Pose2D& p) const { return test::SyntheticScan(*corridor.grid, p); }
 };
 
 TEST(TextAmclSession, APlateReadBeforeAnyScanWaitsUntilOdometryReachesItsStampAndIsWeighedThere) {

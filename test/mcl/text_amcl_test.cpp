@@ -107,7 +107,7 @@ TEST_F(TextAmclTest, InitializeDrawsMaxParticlesFromTheGivenGaussian) {
 TEST_F(TextAmclTest, OdometryAndScansAreGatedLikeAmcl) {
   auto amcl = test::MakeFilter(room_, nullptr, setup_);
   amcl->Initialize({1.5, 2.5, 0.0}, Covariance(0.1, 0.05));
-  const LocalizationScan scan = test::SyntheticScan(*room_, {1.5, 2.5, 0.0});
+  const LaserScan scan = test::SyntheticScan(*room_, {1.5, 2.5, 0.0});
   EXPECT_FALSE(amcl->UpdateOdometry({0.0, 0.0, 0.0}));   // first odometry: reference only
   EXPECT_TRUE(amcl->UpdateLaser(scan));                  // the first scan after initialization is used
   EXPECT_FALSE(amcl->UpdateLaser(scan));                 // no motion since: skipped
@@ -123,7 +123,7 @@ TEST_F(TextAmclTest, OdometryAndScansAreGatedLikeAmcl) {
   EXPECT_FALSE(amcl->UpdateLaser(scan));
   EXPECT_EQ(amcl->Status().laser_updates, 4);
   EXPECT_EQ(amcl->Status().resamples, 2);  // resample_interval 2
-  LocalizationScan bad = scan;
+  LaserScan bad = scan;
   bad.angle_increment_rad = 0.0;
   amcl->ForceUpdate();
   EXPECT_THROW(amcl->UpdateLaser(bad), std::invalid_argument);

@@ -25,7 +25,7 @@ TEST(ToLocalizationScan, KeepsNonFiniteRangesAndTheMountingPose) {
   msg.range_min = 0.1f;
   msg.range_max = 8.0f;
   msg.ranges = {1.0f, kInf, std::numeric_limits<float>::quiet_NaN()};
-  const LocalizationScan scan = ToLocalizationScan(msg, Pose2D{0.2, 0.0, M_PI});
+  const LaserScan scan = ToLocalizationScan(msg, Pose2D{0.2, 0.0, M_PI});
   EXPECT_EQ(ValidateLocalizationScan(scan), "");
   EXPECT_FLOAT_EQ(scan.angle_min_rad, -1.0);
   EXPECT_FLOAT_EQ(scan.max_range_m, 8.0);

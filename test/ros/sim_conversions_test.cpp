@@ -42,7 +42,7 @@ TEST(SimTime, ConvertsSecondsAndRejectsNegativeOrNonFinite) {
 }
 
 TEST(ToLaserScanMsg, KeepsInfiniteRangesAndFillsGeometryAndTiming) {
-  SimulatedScan scan;
+  LaserScan scan;
   scan.angle_min_rad = -M_PI;
   scan.angle_increment_rad = M_PI / 2.0;
   scan.min_range_m = 0.15;
@@ -65,7 +65,7 @@ TEST(ToLaserScanMsg, KeepsInfiniteRangesAndFillsGeometryAndTiming) {
 }
 
 TEST(ToLaserScanMsg, RejectsNonPositiveRate) {
-  EXPECT_THROW(ToLaserScanMsg(SimulatedScan{}, 0.0, "laser", ros::Time(1, 0)), std::invalid_argument);
+  EXPECT_THROW(ToLaserScanMsg(LaserScan{}, 0.0, "laser", ros::Time(1, 0)), std::invalid_argument);
 }
 
 TEST(ToOdometryMsg, PutsPoseInFrameAndTwistInChildFrameWithPlanarCovariance) {

@@ -54,9 +54,9 @@ TEST(ToLaserMounting, RefusesATiltedScanPlane) {
   EXPECT_NE(ToLaserMounting(Rpy(0, 0, 0.0, 0.3, 0.0), &m).find("tilted"), std::string::npos);
 }
 
-TEST(ToRangeScan, MarksNoEchoAndInvalidBeamsAndKeepsTheGeometry) {
-  RangeScan out;
-  ASSERT_EQ(ToRangeScan(FourBeamScan(), LaserMounting{{0.1, 0.0, 0.0}, false}, 0.0, 1, &out), "");
+TEST(ToMappingScan, MarksNoEchoAndInvalidBeamsAndKeepsTheGeometry) {
+  LaserScan out;
+  ASSERT_EQ(ToMappingScan(FourBeamScan(), LaserMounting{{0.1, 0.0, 0.0}, false}, 0.0, 1, &out), "");
   ASSERT_EQ(out.ranges_m.size(), 4u);
   EXPECT_FLOAT_EQ(out.ranges_m[0], 1.0f);
   EXPECT_TRUE(std::isinf(out.ranges_m[1]) && out.ranges_m[1] > 0);  // +inf: no echo
@@ -67,35 +67,35 @@ TEST(ToRangeScan, MarksNoEchoAndInvalidBeamsAndKeepsTheGeometry) {
   EXPECT_NEAR(out.laser_pose.x_m, 0.1, 1e-12);
 }
 
-TEST(ToRangeScan, ReadingsAtOrBeyondMaxRangeBecomeNoEcho) {
+TEST(ToMappingScan, ReadingsAtOrBeyondMaxRangeBecomeNoEcho) {
   sensor_msgs::LaserScan scan = FourBeamScan();
   scan.ranges = {5.0f, 4.0f, 13.0f, 1.0f};
-  RangeScan out;
-  ASSERT_EQ(ToRangeScan(scan, LaserMounting{}, 4.5, 1, &out), "");
+  LaserScan out;
+  ASSERT_EQ(ToMappingScan(scan, LaserMounting{}, 4.5, 1, &out), "");
   EXPECT_TRUE(std::isinf(out.ranges_m[0]));
   EXPECT_FLOAT_EQ(out.ranges_m[1], 4.0f);
   EXPECT_TRUE(std::isinf(out.ranges_m[2]));  // beyond range_max
 }
 
-TEST(ToRangeScan, MirrorsTheAnglesOfAnUpsideDownLaser) {
-  RangeScan out;
-  ASSERT_EQ(ToRangeScan(FourBeamScan(), LaserMounting{{}, true}, 0.0, 1, &out), "");
+TEST(ToMappingScan, MirrorsTheAnglesOfAnUpsideDownLaser) {
+  LaserScan out;
+  ASSERT_EQ(ToMappingScan(FourBeamScan(), LaserMounting{{}, true}, 0.0, 1, &out), "");
   EXPECT_FLOAT_EQ(out.angle_min_rad, 1.5);
   EXPECT_FLOAT_EQ(out.angle_increment_rad, -1.0);
 }
 
-TEST(ToRangeScan, RefusesBrokenShortAndAllInvalidScansLeavingTheOutputAlone) {
-  RangeScan out;
+TEST(ToMappingScan, RefusesBrokenShortAndAllInvalidScansLeavingTheOutputAlone) {
+  LaserScan out;
   out.min_range_m = 42.0;
   sensor_msgs::LaserScan nan_increment = FourBeamScan();
   nan_increment.angle_increment = kNaN;
-  EXPECT_NE(ToRangeScan(nan_increment, {}, 0.0, 1, &out), "");
+  EXPECT_NE(ToMappingScan(nan_increment, {}, 0.0, 1, &out), "");
   sensor_msgs::LaserScan short_scan = FourBeamScan();
   short_scan.ranges.resize(2);  // angle_min..angle_max says 4 beams
-  EXPECT_NE(ToRangeScan(short_scan, {}, 0.0, 1, &out).find("make 4 beams"), std::string::npos);
+  EXPECT_NE(ToMappingScan(short_scan, {}, 0.0, 1, &out).find("make 4 beams"), std::string::npos);
   sensor_msgs::LaserScan all_nan = FourBeamScan();
   all_nan.ranges = {kNaN, kNaN, kInf, kNaN};
-  EXPECT_NE(ToRangeScan(all_nan, {}, 0.0, 1, &out).find("only 0 of 4"), std::string::npos);
+  EXPECT_NE(ToMappingScan(all_nan, {}, 0.0, 1, &out).find("only 0 of 4"), std::string::npos);
   EXPECT_EQ(out.min_range_m, 42.0);
 }
 
@@ -157,7 +157,7 @@ TransformLookup FakeTf() {
 }
 
 TEST(PrepareSlamScan, GivesTheScanWithItsMountingAndTheOdometryAtItsStamp) {
-  RangeScan scan;
+  LaserScan scan;
   Pose2D odom;
   ASSERT_EQ(PrepareSlamScan(FourBeamScan(), FakeTf(), SlamInputFrames{"odom", "base_link", 0.0, 1}, &scan, &odom), "");
   EXPECT_NEAR(scan.laser_pose.x_m, 0.2, 1e-12);
@@ -166,7 +166,7 @@ TEST(PrepareSlamScan, GivesTheScanWithItsMountingAndTheOdometryAtItsStamp) {
 }
 
 TEST(PrepareSlamScan, NamesTheMissingTransformOrTheBrokenScan) {
-  RangeScan scan;
+  LaserScan scan;
   Pose2D odom;
   sensor_msgs::LaserScan msg = FourBeamScan();
   msg.header.frame_id = "laser2";
@@ -191,7 +191,7 @@ TEST(PrepareSlamSightings, KeepsCrossingsListsBrokenDetectionsAndNeedsTheCameraT
   d.crossed_center = true;
   d.confidence = 2.0f;
   array.detections.push_back(d);       // listed: broken
-  std::vector<PlateSighting> sightings;
+  std::vector<PlateReading> sightings;
   std::vector<std::string> rejected;
   Pose2D odom;
   ASSERT_EQ(PrepareSlamSightings(array, FakeTf(), SlamInputFrames{}, &sightings, &odom, &rejected), "");

@@ -22,7 +22,7 @@ struct Beams {
   BeamGeometry geometry;
 };
 Beams ScanOf(const std::vector<Segment>& walls, const Pose2D& pose, const Pose2D& mount = {}) {
-  const RangeScan scan = test::Scan(walls, pose);
+  const LaserScan scan = test::Scan(walls, pose);
   Beams b{scan.ranges_m, BeamGeometryOf(scan)};
   b.geometry.laser_pose = mount;
   return b;

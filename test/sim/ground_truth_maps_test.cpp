@@ -302,7 +302,7 @@ TEST(GroundTruthMaps, RaysInTheSavedGridAgreeWithTheSimulatedLaser) {
   std::vector<double> errors;
   for (double x = 1.0; x < 29.0; x += 1.7) {
     const Pose2D pose{x, 0.6 + 0.05 * x, 0.1 * x};
-    const SimulatedScan scan = laser.CastExact(world, pose);
+    const LaserScan scan = laser.CastExact(world, pose);
     const Pose2D laser_pose = pose.Compose(laser.MountPose());
     for (size_t i = 0; i < scan.ranges_m.size(); ++i) {
       if (!std::isfinite(scan.ranges_m[i])) continue;

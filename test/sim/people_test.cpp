@@ -84,7 +84,7 @@ TEST(People, LaserSeesTheLegsMoveWithSimulatedTime) {
   const LaserSimulator laser(exact);
   // The robot at (1, 1) looks along +x at the walker's line (between the legs: the nearest of ±10 beams).
   const auto ahead = [&]() {
-    const SimulatedScan scan = laser.CastExact(sim.world(), sim.true_pose());
+    const LaserScan scan = laser.CastExact(sim.world(), sim.true_pose());
     return *std::min_element(scan.ranges_m.begin() + 170, scan.ranges_m.begin() + 191);
   };
   const double at_start = ahead();

@@ -91,9 +91,9 @@ TEST(Simulator, ALiftRideChangesTheWorldTheLaserSeesButNotTheOdometry) {
     if (wall.segment.b.y > 0.5) wall.segment.b.y += 1.0;
   }
   upstairs.surfaces.clear();
-  const SimulatedScan before = sim.Scan();
+  const LaserScan before = sim.Scan();
   sim.ChangeWorld(upstairs, sim.true_pose());
-  const SimulatedScan after = sim.Scan();
+  const LaserScan after = sim.Scan();
   EXPECT_DOUBLE_EQ(sim.odom_pose().x_m, odom_before.x_m);
   EXPECT_DOUBLE_EQ(sim.distance_travelled_m(), travelled);
   EXPECT_DOUBLE_EQ(sim.linear_velocity_mps(), 0.0);

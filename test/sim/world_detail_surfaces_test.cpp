@@ -12,7 +12,7 @@
 namespace doorplate_localization {
 namespace {
 
-int BeamAt(const SimulatedScan& scan, double angle_rad) {
+int BeamAt(const LaserScan& scan, double angle_rad) {
   const double from_first = std::fmod(angle_rad - scan.angle_min_rad + 4 * M_PI, 2 * M_PI);
   return static_cast<int>(std::lround(from_first / scan.angle_increment_rad)) % static_cast<int>(scan.ranges_m.size());
 }
@@ -25,7 +25,7 @@ LaserOptions Exact(int beams = 3600) {
 
 // The range straight right (towards the south wall, y = 0) from (x, 1).
 double RangeDown(const World& world, double x) {
-  const SimulatedScan scan = LaserSimulator(Exact()).CastExact(world, {x, 1.0, 0.0});
+  const LaserScan scan = LaserSimulator(Exact()).CastExact(world, {x, 1.0, 0.0});
   return scan.ranges_m[BeamAt(scan, -M_PI / 2)];
 }
 
@@ -63,7 +63,7 @@ TEST(WorldDetail, LaserSeesABenchsLegsButNotItsSeat) {
   // A laser mounted at seat height sees the seat's front instead.
   LaserOptions seat = Exact();
   seat.mount_height_m = 0.45;
-  const SimulatedScan scan = LaserSimulator(seat).CastExact(world, {5.0, 1.0, 0.0});
+  const LaserScan scan = LaserSimulator(seat).CastExact(world, {5.0, 1.0, 0.0});
   EXPECT_NEAR(scan.ranges_m[BeamAt(scan, -M_PI / 2)], 1.0 - 0.525, 1e-4);
 }
 
@@ -112,7 +112,7 @@ TEST(WorldDetail, GlassPassesMostBeamsAndReflectsSomeDeterministically) {
   EXPECT_EQ(laser.CastExact(a, {2.0, 1.0, 0.0}).ranges_m, laser.CastExact(a, {2.0, 1.0, 0.0}).ranges_m);
   EXPECT_NE(laser.CastExact(a, {2.0, 1.0, 0.0}).ranges_m, laser.CastExact(b, {2.0, 1.0, 0.0}).ranges_m);
   // A beam that passes goes on to the end wall.
-  const SimulatedScan scan = laser.CastExact(CorridorWithGlassAcross(0.0), {2.0, 1.0, 0.0});
+  const LaserScan scan = laser.CastExact(CorridorWithGlassAcross(0.0), {2.0, 1.0, 0.0});
   EXPECT_NEAR(scan.ranges_m[BeamAt(scan, 0.0)], 8.0, 1e-4);
 }
 

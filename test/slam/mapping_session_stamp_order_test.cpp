@@ -22,8 +22,8 @@ MappingSessionOptions Ordered(double camera_wait_s) {
   return o;
 }
 
-PlateSighting Sighting(const std::string& text, double bearing_rad) {
-  PlateSighting s;
+PlateReading Sighting(const std::string& text, double bearing_rad) {
+  PlateReading s;
   s.text = text;
   s.confidence = 0.9;
   s.bearing_rad = bearing_rad;
@@ -35,7 +35,7 @@ struct Input {
   double stamp_s;
   Pose2D odometry;
   bool scan;
-  std::vector<PlateSighting> sightings;
+  std::vector<PlateReading> sightings;
 };
 
 // 20 m of a corridor (odometry 3 % long): scans at 10 Hz, camera arrays at 5 Hz, a plate every 4 m on
@@ -48,7 +48,7 @@ std::vector<Input> CorridorDrive() {
     const Pose2D odometry{1.03 * speed_mps * t, 0.0, 0.0};
     inputs.push_back({t, odometry, true, {}});
     if (i % 2 == 1) {
-      std::vector<PlateSighting> read;
+      std::vector<PlateReading> read;
       // Plate k hangs at x = 2 + 4 k (true metres), passed at t = 4 + 8 k s.
       const int plate = (i - 41) / 80, since = (i - 41) % 80;
       if (i >= 41 && (since == 0 || since == 8)) {

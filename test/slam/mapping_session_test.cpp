@@ -19,8 +19,8 @@ MappingSessionOptions FewParticles(int n) {
   return o;
 }
 
-PlateSighting Sighting(const std::string& text, double bearing_rad, std::optional<double> range_m = std::nullopt) {
-  PlateSighting s;
+PlateReading Sighting(const std::string& text, double bearing_rad, std::optional<double> range_m = std::nullopt) {
+  PlateReading s;
   s.text = text;
   s.confidence = 0.9;
   s.bearing_rad = bearing_rad;
@@ -113,7 +113,7 @@ TEST(MappingSession, AScanNotAfterThePreviousOneIsRefusedAndChangesNothing) {
   EXPECT_TRUE(session.AddScan(2.0, {1, 0, 0}, test::Scan(test::Room(), {1, 0, 0})).scan_processed);
   EXPECT_THROW(session.AddScan(NAN, {}, test::Scan(test::Room(), {})), std::invalid_argument);
   EXPECT_THROW(session.AddScan(3.0, {NAN, 0, 0}, test::Scan(test::Room(), {})), std::invalid_argument);
-  EXPECT_THROW(session.AddScan(3.0, {}, RangeScan{}), std::invalid_argument);
+  EXPECT_THROW(session.AddScan(3.0, {}, LaserScan{}), std::invalid_argument);
   EXPECT_EQ(session.slam().slam().stats().scans_seen, 2);
 }
 
@@ -235,7 +235,7 @@ TEST(MappingSession, AMalformedSightingRefusesTheWholeCallNamingTheField) {
     session.AddPlates(0.0, {}, {Sighting("201", M_PI / 2), Sighting("203", NAN)});
     FAIL() << "no exception";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("PlateSighting.bearing_rad"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("PlateReading.bearing_rad"), std::string::npos) << e.what();
   }
   EXPECT_EQ(session.slam().num_landmarks(), 0);
   EXPECT_EQ(session.counters().plate_sightings, 0);

@@ -202,7 +202,7 @@ TEST(RbpfSlam, RefusesMoreParticlesThanTheLimitNamingIt) {
 
 TEST(RbpfSlam, RejectsAScanWithoutGeometry) {
   RbpfSlam slam(FewParticles(2));
-  RangeScan scan;
+  LaserScan scan;
   scan.ranges_m = {1.0f, 2.0f};
   EXPECT_THROW(slam.AddScan(scan, {}, 0), std::invalid_argument);
 }
@@ -244,7 +244,7 @@ TEST(RbpfSlam, BeamsWithoutEchoDoNotClearFreeSpaceThroughAWallTheMapHolds) {
   RbpfSlam slam(FewParticles(1));
   slam.AddScan(test::Scan(test::Room(), {0, 0, 0}), {0, 0, 0}, 0);
   const Pose2D pose{0.6, 0, 0};
-  RangeScan scan = test::Scan(test::Room(), pose);
+  LaserScan scan = test::Scan(test::Room(), pose);
   int dropouts = 0;
   for (int i = 0; i < static_cast<int>(scan.ranges_m.size()); ++i) {
     const double a = scan.BeamAngle(i);

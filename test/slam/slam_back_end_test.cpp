@@ -184,7 +184,7 @@ SlamBackEndResult OutAndBackWithTheReturnOffBy(double return_offset_m) {
   for (double x = 20.5; x >= 1.0 - 1e-9; x -= 0.5) truth.push_back({x, 0.3, M_PI});
   const int out_nodes = 41;
   for (int i = 0; i < static_cast<int>(truth.size()); ++i) {
-    RangeScan scan = test::Scan(Corridor40(), truth[i], kBeams, kMaxRangeM);
+    LaserScan scan = test::Scan(Corridor40(), truth[i], kBeams, kMaxRangeM);
     for (float& r : scan.ranges_m) r += static_cast<float>(noise_m(random));
     const double offset_m = i < out_nodes ? 0.0 : return_offset_m;
     back_end.AddNode(test::Points(scan), truth[i], {truth[i].x_m + offset_m, truth[i].y_m, truth[i].theta_rad});

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "doorplate_localization/common/geometry2d.h"
-#include "doorplate_localization/slam/range_scan.h"
+#include "doorplate_localization/sensors/laser_scan.h"
 #include "doorplate_localization/slam/tiled_grid.h"
 
 namespace doorplate_localization {
@@ -34,9 +34,9 @@ inline std::vector<Pose2D> PosesAlongX(double from_m, double to_m, double step_m
 }
 
 // A 360° scan of `beams` beams from `pose`: +inf where nothing is within `max_range_m`.
-inline RangeScan Scan(const std::vector<Segment>& walls, const Pose2D& pose, int beams = 360,
+inline LaserScan Scan(const std::vector<Segment>& walls, const Pose2D& pose, int beams = 360,
                       double max_range_m = 20.0) {
-  RangeScan scan;
+  LaserScan scan;
   scan.angle_min_rad = -M_PI;
   scan.angle_increment_rad = 2 * M_PI / beams;
   scan.min_range_m = 0.05;
@@ -55,7 +55,7 @@ inline RangeScan Scan(const std::vector<Segment>& walls, const Pose2D& pose, int
 }
 
 // The scan's echoes as points in the laser (= base_link) frame.
-inline std::vector<Vec2> Points(const RangeScan& scan) {
+inline std::vector<Vec2> Points(const LaserScan& scan) {
   std::vector<Vec2> points;
   for (int i = 0; i < static_cast<int>(scan.ranges_m.size()); ++i) {
     const double r = scan.ranges_m[i];

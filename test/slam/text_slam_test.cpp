@@ -18,8 +18,8 @@ TextSlamOptions FewParticles(int n) {
   return o;
 }
 
-PlateSighting Sighting(const std::string& text, double bearing_rad, std::optional<double> range_m = 1.0) {
-  PlateSighting s;
+PlateReading Sighting(const std::string& text, double bearing_rad, std::optional<double> range_m = 1.0) {
+  PlateReading s;
   s.text = text;
   s.confidence = 0.9;
   s.bearing_rad = bearing_rad;
@@ -64,7 +64,7 @@ TEST(TextSlam, UnusableReadingsAreIgnoredWithTheReason) {
   o.min_confidence = 0.5;
   TextSlam slam(o);
   slam.AddScan(test::Scan(test::Corridor(), {0, 0, 0}), {0, 0, 0}, 0);
-  PlateSighting unsure = Sighting("201", M_PI / 2);
+  PlateReading unsure = Sighting("201", M_PI / 2);
   unsure.confidence = 0.3;
   EXPECT_EQ(slam.AddPlate(unsure, {}).outcome, PlateOutcome::kLowConfidence);
   EXPECT_EQ(slam.AddPlate(Sighting("201", M_PI / 2, 9.0), {}).outcome, PlateOutcome::kRangeOutOfBounds);
@@ -85,12 +85,12 @@ TEST(TextSlam, ANonFiniteOdometryPoseIsRefusedAndLeavesTheFilterAsItWas) {
 TEST(TextSlam, BadFieldsThrowNamingTheField) {
   TextSlam slam(FewParticles(2));
   slam.AddScan(test::Scan(test::Room(), {0, 0, 0}), {0, 0, 0}, 0);
-  PlateSighting s = Sighting("201", NAN);
+  PlateReading s = Sighting("201", NAN);
   try {
     slam.AddPlate(s, {});
     FAIL() << "no exception";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("PlateSighting.bearing_rad"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("PlateReading.bearing_rad"), std::string::npos) << e.what();
   }
   EXPECT_THROW(slam.AddPlate(Sighting("", 1.0), {}), std::invalid_argument);
   EXPECT_THROW(slam.AddPlate(Sighting("201", 1.0, -1.0), {}), std::invalid_argument);

@@ -29,8 +29,9 @@ struct PlateRoute {
 // (different walls, or a map without `adjacent`). Throws std::out_of_range for an invalid index.
 std::optional<PlateRoute> AdjacentRoute(const TextMap& map, int from, int to, std::string* reason);
 
-// The plate the robot has just read: the moment its reading crossed the camera's image centre.
-struct PlateReading {
+// The plate the robot has just read, matched to a landmark of the map (the raw reading is
+// sensors/plate_reading.h's PlateReading): the moment its reading crossed the camera's image centre.
+struct MatchedPlateReading {
   int landmark = -1;          // index into TextMap::landmarks of the plate read
   Pose2D odom_pose;           // base_link in the odom frame at that moment
   bool plate_on_left = true;  // the plate was on the robot's left (a left-looking camera), else on its right
@@ -45,6 +46,6 @@ struct PlateReading {
 // wall); among several plates of the room number the shortest route is taken (duplicate_rule "nearest") or
 // the request is refused ("refuse"). `goal->note` states the route (plates and metres).
 RoomGoalResult PlanFromReading(const RoomGoalPlanner& planner, const std::string& request,
-                               const PlateReading& reading);
+                               const MatchedPlateReading& reading);
 
 }  // namespace doorplate_localization

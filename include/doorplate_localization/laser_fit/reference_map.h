@@ -13,7 +13,7 @@
 #include "doorplate_localization/common/geometry2d.h"
 #include "doorplate_localization/maps/occupancy_grid.h"
 #include "doorplate_localization/mcl/localization_grid.h"
-#include "doorplate_localization/slam/range_scan.h"
+#include "doorplate_localization/sensors/laser_scan.h"
 #include "doorplate_localization/slam/tiled_grid.h"
 
 namespace doorplate_localization {
@@ -47,7 +47,7 @@ class ReferenceMap {
 
   // Draws one scan taken by a laser at `laser_in_map` (scan.laser_pose is ignored: the pose given is the
   // laser's own). Non-finite readings, readings below scan.min_range_m or beyond max_range_m are skipped.
-  void AddScan(const Pose2D& laser_in_map, const RangeScan& scan);
+  void AddScan(const Pose2D& laser_in_map, const LaserScan& scan);
   // Freezes the grid for Expect(); AddScan after this throws std::logic_error.
   void Finish();
 

@@ -31,7 +31,7 @@ class BeamModel : public LaserModel {
 
   // Max-range readings (+inf or >= max range, REP-117) are used: they score z_max where the ray cast
   // also reaches max range. NaN, -inf and below-min readings are skipped.
-  void LogLikelihoods(const LocalizationScan& scan, const std::vector<Particle>& particles,
+  void LogLikelihoods(const LaserScan& scan, const std::vector<Particle>& particles,
                       std::vector<double>* log_likelihoods) override;
 
   // The probability density of one reading given the expected range (amcl's pz, before combining).

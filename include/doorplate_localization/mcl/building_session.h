@@ -63,7 +63,7 @@ class BuildingSession {
   // As TextAmclSession's; the readings also update the floor belief (before they reach a session), and
   // may switch the floor (floor_changed() says so; the switch's replayed readings are in the update).
   SessionUpdate AddOdometry(double stamp_s, const Pose2D& base_in_odom);
-  SessionUpdate AddScan(double stamp_s, const Pose2D& base_in_odom, const LocalizationScan& scan);
+  SessionUpdate AddScan(double stamp_s, const Pose2D& base_in_odom, const LaserScan& scan);
   SessionUpdate AddPlates(double stamp_s, const std::vector<PlateReading>& readings);
 
   // --- state (as left by the last call) ---
@@ -85,7 +85,7 @@ class BuildingSession {
   struct Event {  // an input of the current session, kept for a switch's replay
     double stamp_s;
     Pose2D base_in_odom;
-    std::optional<LocalizationScan> scan;
+    std::optional<LaserScan> scan;
   };
   struct TimedReading {
     double stamp_s;
@@ -94,7 +94,7 @@ class BuildingSession {
 
   TextAmclSession& Current() { return *sessions_[static_cast<size_t>(current_)]; }
   TextAmclSession& Session(int floor);  // made on first use (the constructor uses every floor)
-  void Remember(double stamp_s, const Pose2D& base_in_odom, const LocalizationScan* scan);
+  void Remember(double stamp_s, const Pose2D& base_in_odom, const LaserScan* scan);
   void Forget(double now_s);
   std::vector<bool> FloorsWithRoom(const std::string& text) const;
   // Makes `floor` current with global localization and replays the recent inputs into it.

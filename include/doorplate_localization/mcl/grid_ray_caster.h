@@ -23,7 +23,7 @@ bool HasLineOfSight(const LocalizationGrid& grid, Vec2 from, Vec2 to, double tol
 // Noise-free scan of the grid seen by a laser mounted at `scan_geometry.laser_pose` on a robot at
 // `robot_pose` (map frame): one beam per `num_beams` from the geometry's angle_min/increment, +inf
 // where nothing blocks within max_range_m (REP-117). Ranges/laser pose are copied from the template.
-LocalizationScan CastScan(const LocalizationGrid& grid, const Pose2D& robot_pose, const LocalizationScan& scan_geometry,
+LaserScan CastScan(const LocalizationGrid& grid, const Pose2D& robot_pose, const LaserScan& scan_geometry,
                    int num_beams, bool unknown_blocks = true);
 
 }  // namespace doorplate_localization

@@ -29,7 +29,7 @@ class LaserModel {
   // particle, up to one additive constant that depends only on the model and the scan, so the values
   // compare across particles and, for the same model, across scans (Augmented MCL averages them).
   // Throws std::invalid_argument naming the field if the scan is unusable (ValidateLocalizationScan).
-  virtual void LogLikelihoods(const LocalizationScan& scan, const std::vector<Particle>& particles,
+  virtual void LogLikelihoods(const LaserScan& scan, const std::vector<Particle>& particles,
                               std::vector<double>* log_likelihoods) = 0;
 };
 

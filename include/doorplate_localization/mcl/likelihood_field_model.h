@@ -39,7 +39,7 @@ class LikelihoodFieldModel : public LaserModel {
   // Builds the distance field. Throws std::invalid_argument naming the field of a bad option.
   LikelihoodFieldModel(std::shared_ptr<const LocalizationGrid> grid, const LikelihoodFieldModelOptions& options);
 
-  void LogLikelihoods(const LocalizationScan& scan, const std::vector<Particle>& particles,
+  void LogLikelihoods(const LaserScan& scan, const std::vector<Particle>& particles,
                       std::vector<double>* log_likelihoods) override;
 
   // Distance (m) from map point p to the nearest occupied cell's centre, clamped at

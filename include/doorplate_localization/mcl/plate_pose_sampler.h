@@ -24,7 +24,7 @@
 
 #include "doorplate_localization/maps/text_map.h"
 #include "doorplate_localization/mcl/localization_grid.h"
-#include "doorplate_localization/mcl/plate_reading.h"
+#include "doorplate_localization/sensors/plate_reading.h"
 #include "doorplate_localization/mcl/text_match.h"
 
 namespace doorplate_localization {

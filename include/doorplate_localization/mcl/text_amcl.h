@@ -164,7 +164,7 @@ class TextAmcl {
   // Weighs the particles with a scan if the filter moved since the last scan update (or was just
   // initialized, or ForceUpdate was called); resamples every resample_interval-th update. Returns
   // whether the scan was used. Throws std::invalid_argument for an unusable scan (ValidateLocalizationScan).
-  bool UpdateLaser(const LocalizationScan& scan);
+  bool UpdateLaser(const LaserScan& scan);
   // Reweights (and maybe reseeds) with a doorplate reading, at any time. Throws std::invalid_argument
   // for an invalid reading (ValidatePlateReading); see PlateUpdateResult for what happened.
   PlateUpdateResult UpdatePlate(const PlateReading& reading);

@@ -52,7 +52,7 @@
 #include "doorplate_localization/maps/occupancy_grid.h"
 #include "doorplate_localization/maps/text_map.h"
 #include "doorplate_localization/mcl/localization_scan.h"
-#include "doorplate_localization/mcl/plate_reading.h"
+#include "doorplate_localization/sensors/plate_reading.h"
 #include "doorplate_localization/mcl/text_amcl.h"
 #include "doorplate_localization/mcl/text_amcl_setup.h"
 #include "doorplate_localization/mcl/text_match.h"
@@ -144,7 +144,7 @@ class TextAmclSession {
   // A scan (laser frame, with its mounting pose in base_link) and the odometry at its stamp: applies the
   // readings up to its stamp, then the motion and laser update rules. Throws std::invalid_argument for a
   // scan ValidateLocalizationScan refuses (nothing changed).
-  SessionUpdate AddScan(double stamp_s, const Pose2D& base_in_odom, const LocalizationScan& scan);
+  SessionUpdate AddScan(double stamp_s, const Pose2D& base_in_odom, const LaserScan& scan);
   // Plate readings taken at `stamp_s` (bearing in base_link; range_m ignored). Invalid ones, unknown rooms
   // and (laser only) all are dropped now; the others are applied now if odometry has reached the stamp,
   // else queued.
@@ -173,7 +173,7 @@ class TextAmclSession {
   };
   struct TimedScan {
     double stamp_s;
-    LocalizationScan scan;
+    LaserScan scan;
   };
   struct PendingReading {
     double stamp_s;

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "doorplate_localization/mcl/particle.h"
-#include "doorplate_localization/mcl/plate_reading.h"
+#include "doorplate_localization/sensors/plate_reading.h"
 
 namespace doorplate_localization {
 

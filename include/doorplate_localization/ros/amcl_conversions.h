@@ -20,7 +20,7 @@
 #include "doorplate_localization/common/geometry2d.h"
 #include "doorplate_localization/mcl/localization_scan.h"
 #include "doorplate_localization/mcl/particle.h"
-#include "doorplate_localization/mcl/plate_reading.h"
+#include "doorplate_localization/sensors/plate_reading.h"
 #include "doorplate_localization/mcl/text_amcl.h"
 #include "doorplate_localization/mcl/text_amcl_session.h"
 #include "doorplate_localization/ros/pose_conversions.h"
@@ -31,12 +31,12 @@ namespace doorplate_localization {
 // A sensor_msgs/LaserScan (validated with ValidateScan) as the filter's scan: ranges copied as they are
 // (REP-117 ±inf / NaN stay), range_min/range_max as the device's interval, `laser_in_base` (the laser
 // frame in base_link, from tf) as the mounting pose.
-LocalizationScan ToLocalizationScan(const sensor_msgs::LaserScan& msg, const Pose2D& laser_in_base);
+LaserScan ToLocalizationScan(const sensor_msgs::LaserScan& msg, const Pose2D& laser_in_base);
 
 // --- doorplate readings ---
 // The plate readings of one TextDetectionArray: one per plate report (IsPlateReport), bearing_rad in
 // base_link = camera.yaw_rad + camera.bearing_sign * detection bearing (pose_conversions.h's ToCameraAxis,
-// wrapped to (-pi, pi]; PlateReadingAt), no range (TextAmclSession measures it from its scans), camera side
+// wrapped to (-pi, pi]; PlateReadingFromCamera), no range (TextAmclSession measures it from its scans), camera side
 // unknown. Detections whose reading fails ValidatePlateReading (confidence outside [0, 1], NaN bearing) are
 // left out with the problem appended to *problems (may be null).
 std::vector<PlateReading> ToPlateReadings(const TextDetectionArray& msg, const CameraAxis& camera,

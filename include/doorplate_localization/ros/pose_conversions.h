@@ -16,6 +16,7 @@
 #include <tf2/LinearMath/Vector3.h>
 
 #include "doorplate_localization/common/geometry2d.h"
+#include "doorplate_localization/sensors/plate_reading.h"
 
 namespace doorplate_localization {
 
@@ -51,16 +52,10 @@ tf2::Vector3 ChildAxisInParent(const geometry_msgs::Quaternion& child_in_parent,
 Pose2D MapToOdom(const Pose2D& base_in_map, const Pose2D& base_in_odom);
 
 // --- cameras ---
-// A camera's optical axis in base_link, from the optical frame (z forward, x right, y down; the
-// sensor_msgs/Image convention) in base_link.
-struct CameraAxis {
-  double yaw_rad = 0.0;       // yaw of the optical axis about base_link's z, (-pi, pi]
-  double bearing_sign = 1.0;  // turns an image bearing (positive towards the image's left) into a
-                              // counter-clockwise angle about base_link's z: +1 upright, -1 upside down
-};
-// Returns "" and fills *axis, or the problem (an optical axis more than 25° out of the floor plane, where
+// The camera's optical axis (CameraAxis, sensors/plate_reading.h) from its optical frame (z forward, x right,
+// y down; the sensor_msgs/Image convention) in base_link. Returns "" and fills *axis, or the problem (an optical axis more than 25° out of the floor plane, where
 // a plate bearing is meaningless); *axis is left alone on error. A plate seen at image bearing b lies at
-// yaw_rad + bearing_sign * b in base_link.
+// yaw_rad + bearing_sign * b in base_link (BearingInBase).
 std::string ToCameraAxis(const geometry_msgs::Transform& optical_in_base, CameraAxis* axis);
 
 // Which side of base_link a camera looks to: true = left (+y), false = right (−y); nullopt when

@@ -29,7 +29,7 @@ ros::Time SimTime(double time_s);
 // (REP-117). scan_time = 1 / rate_hz. time_increment = 0: the simulator casts every beam at the same
 // instant, and a non-zero value would make deskewing consumers move beams that were never distorted.
 // Throws std::invalid_argument if rate_hz <= 0.
-sensor_msgs::LaserScan ToLaserScanMsg(const SimulatedScan& scan, double rate_hz, const std::string& frame_id,
+sensor_msgs::LaserScan ToLaserScanMsg(const LaserScan& scan, double rate_hz, const std::string& frame_id,
                                       const ros::Time& stamp);
 
 // Diagonal variances of a planar pose or twist; the message's other entries (z, roll, pitch and all

@@ -18,7 +18,7 @@
 #include "doorplate_localization/TextDetection.h"
 #include "doorplate_localization/TextDetectionArray.h"
 #include "doorplate_localization/ros/pose_conversions.h"
-#include "doorplate_localization/slam/range_scan.h"
+#include "doorplate_localization/sensors/laser_scan.h"
 #include "doorplate_localization/slam/rbpf_slam.h"
 #include "doorplate_localization/slam/text_slam.h"
 
@@ -35,21 +35,21 @@ struct LaserMounting {
 // transform, or a laser whose scan plane is tilted more than ~8° from the floor plane (no 2D map then).
 std::string ToLaserMounting(const geometry_msgs::Transform& base_to_laser, LaserMounting* mounting);
 
-// Converts a LaserScan into the core's RangeScan (beam angles in the laser frame, upside-down mountings
+// Converts a LaserScan into the core's LaserScan (beam angles in the laser frame, upside-down mountings
 // mirrored, `laser_pose` = the mounting's pose). Readings: +inf, or >= `max_range_m` (<= 0: the scan's
 // range_max) or > range_max, mean "no echo" (+inf: free space up to the core's clear range); NaN, -inf
 // and readings below range_min are invalid (NaN, skipped). Returns "" and fills *out, or the problem
 // (ValidateScan's, ranges that do not fit angle_min..angle_max, or fewer than `min_valid_beams`
 // finite returns); *out is left alone on error.
-std::string ToRangeScan(const sensor_msgs::LaserScan& msg, const LaserMounting& mounting, double max_range_m,
-                        int min_valid_beams, RangeScan* out);
+std::string ToMappingScan(const sensor_msgs::LaserScan& msg, const LaserMounting& mounting, double max_range_m,
+                        int min_valid_beams, LaserScan* out);
 
 // A detection as a SLAM plate sighting: the bearing composed with the camera axis (base_link, CCW:
 // camera.yaw_rad + camera.bearing_sign * bearing_rad, wrapped to (-pi, pi]), the confidence, no range
 // (the mapping session takes it from the scan nearest in time). nullopt, with *why_not set, for detections the mapper does not
 // use: not at the image-centre crossing, an empty text, a text longer than limits::kMaxPlateTextBytes, or a
 // detection ValidateTextDetection rejects.
-std::optional<PlateSighting> ToPlateSighting(const TextDetection& msg, const CameraAxis& camera,
+std::optional<PlateReading> ToPlateSighting(const TextDetection& msg, const CameraAxis& camera,
                                              std::string* why_not);
 
 // A tf lookup: the transform `target` <- `source` at `stamp` (i.e. `source` expressed in `target`), or
@@ -61,21 +61,21 @@ using TransformLookup = std::function<std::optional<geometry_msgs::Transform>(
 struct SlamInputFrames {
   std::string odom_frame = "odom";
   std::string base_frame = "base_link";
-  double max_range_m = 0.0;   // see ToRangeScan
+  double max_range_m = 0.0;   // see ToMappingScan
   int min_valid_beams = 10;
 };
 
 // One LaserScan as the SLAM takes it: the mounting from tf base_frame -> scan frame, the odometry pose
 // (base_frame in odom_frame) at the scan's stamp, and the converted scan. Returns "" or the problem.
 std::string PrepareSlamScan(const sensor_msgs::LaserScan& msg, const TransformLookup& lookup,
-                            const SlamInputFrames& frames, RangeScan* scan, Pose2D* odometry_pose);
+                            const SlamInputFrames& frames, LaserScan* scan, Pose2D* odometry_pose);
 
 // One TextDetectionArray as plate sightings (ToPlateSighting; the camera axis from tf base_frame ->
 // header.frame_id) and the odometry pose at its stamp. Returns "" or the problem with the tf; detections
 // dropped for a reason other than "not at the crossing" / "text is empty" are listed in *rejected as
 // "'<text>': <why>".
 std::string PrepareSlamSightings(const TextDetectionArray& msg, const TransformLookup& lookup,
-                                 const SlamInputFrames& frames, std::vector<PlateSighting>* sightings,
+                                 const SlamInputFrames& frames, std::vector<PlateReading>* sightings,
                                  Pose2D* odometry_pose, std::vector<std::string>* rejected);
 
 // What SlamMappingNodelet knows about its own condition, for /diagnostics (issue 18).

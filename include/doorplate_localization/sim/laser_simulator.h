@@ -6,19 +6,11 @@
 #include <vector>
 
 #include "doorplate_localization/common/geometry2d.h"
+#include "doorplate_localization/sensors/laser_scan.h"
 #include "doorplate_localization/sim/laser_error_model.h"
 #include "doorplate_localization/sim/world.h"
 
 namespace doorplate_localization {
-
-// One scan in the laser frame, REP-117: a beam with no echo within max_range_m is +inf.
-struct SimulatedScan {
-  double angle_min_rad = 0.0;
-  double angle_increment_rad = 0.0;
-  double min_range_m = 0.0;
-  double max_range_m = 0.0;
-  std::vector<float> ranges_m;
-};
 
 class LaserSimulator {
  public:
@@ -29,13 +21,14 @@ class LaserSimulator {
   LaserSimulator(const LaserOptions& options, std::shared_ptr<const LaserErrorModel> error_model);
 
   // Noise-free distance along every beam from the laser at `robot_pose` (base_link in world);
-  // +inf where nothing is hit within max_range_m. If `incidence_rad` is given it receives, per beam, the
+  // +inf where nothing is hit within max_range_m. The scan's laser_pose is the mounting pose (MountPose),
+  // its max_range_m the device's. If `incidence_rad` is given it receives, per beam, the
   // angle between the beam and the normal of the surface it hits, in [0, pi/2] (0: head-on), NaN where
   // the beam hits nothing within max_range_m.
-  SimulatedScan CastExact(const World& world, const Pose2D& robot_pose,
+  LaserScan CastExact(const World& world, const Pose2D& robot_pose,
                           std::vector<float>* incidence_rad = nullptr) const;
   // CastExact with the error model's noise, dropouts, ... drawn from `rng`.
-  SimulatedScan Simulate(const World& world, const Pose2D& robot_pose, std::mt19937_64& rng) const;
+  LaserScan Simulate(const World& world, const Pose2D& robot_pose, std::mt19937_64& rng) const;
 
   const LaserOptions& options() const { return options_; }
   const LaserErrorModel& error_model() const { return *error_model_; }

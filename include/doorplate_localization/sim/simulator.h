@@ -50,7 +50,7 @@ class Simulator {
   double distance_travelled_m() const { return distance_travelled_m_; }
 
   // The sensors see the world's people where they are at time_s() (PlacePeople).
-  SimulatedScan Scan();
+  LaserScan Scan();
   cv::Mat CameraImage();
 
   // The world, with its people placed at the time of the last Scan/CameraImage (at 0 before any).

@@ -24,7 +24,7 @@ class TopDownView {
   cv::Mat& image() { return image_; }
 
   // Laser hits of `scan` taken from `laser_pose` (laser frame in the world), as dots.
-  void DrawScan(const SimulatedScan& scan, const Pose2D& laser_pose, const cv::Scalar& bgr = {0, 0, 230});
+  void DrawScan(const LaserScan& scan, const Pose2D& laser_pose, const cv::Scalar& bgr = {0, 0, 230});
   // The camera's horizontal field of view from the robot at `robot_pose`, 3 m long.
   void DrawCameraFov(const CameraRenderer& camera, const Pose2D& robot_pose);
   // The robot's outline and heading.

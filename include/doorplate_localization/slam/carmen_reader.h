@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "doorplate_localization/common/geometry2d.h"
-#include "doorplate_localization/slam/range_scan.h"
+#include "doorplate_localization/sensors/laser_scan.h"
 
 namespace doorplate_localization {
 
@@ -30,7 +30,7 @@ struct CarmenReaderOptions {
 struct CarmenScan {
   int line_number = 0;        // 1-based line in the file, for messages
   int scan_index = 0;         // 0-based index among the FLASER lines (the protocol's scan_index)
-  RangeScan scan;             // laser at base_link (CARMEN FLASER ranges are in the laser frame)
+  LaserScan scan;             // laser at base_link (CARMEN FLASER ranges are in the laser frame)
   Pose2D laser_pose;          // first pose triple (x y theta): the laser pose as logged
   Pose2D odometry_pose;       // second pose triple: the robot's odometry
   double timestamp_s = 0.0;   // ipc_timestamp

@@ -65,7 +65,7 @@
 #include "doorplate_localization/common/geometry2d.h"
 #include "doorplate_localization/maps/occupancy_grid.h"
 #include "doorplate_localization/maps/text_map.h"
-#include "doorplate_localization/slam/range_scan.h"
+#include "doorplate_localization/sensors/laser_scan.h"
 #include "doorplate_localization/slam/text_slam.h"
 
 namespace doorplate_localization {
@@ -94,7 +94,7 @@ void ValidateMappingSessionOptions(const MappingSessionOptions& options);
 // What became of one plate sighting.
 struct MappingPlateOutcome {
   double stamp_s = 0.0;
-  PlateSighting sighting;      // as given to TextSlam (range_m from the session's range rule if it had none)
+  PlateReading sighting;      // as given to TextSlam (range_m from the session's range rule if it had none)
   TextSlamPlateResult result;
 };
 
@@ -135,12 +135,12 @@ class MappingSession {
   // A scan (laser frame; its mounting in scan.laser_pose) and the odometry (base_link in odom) at its
   // stamp. Throws std::invalid_argument for a bad
   // scan geometry or a non-finite pose (ValidateScan, TextSlam::AddScan; nothing changed).
-  MappingUpdate AddScan(double stamp_s, const Pose2D& base_in_odom, const RangeScan& scan);
+  MappingUpdate AddScan(double stamp_s, const Pose2D& base_in_odom, const LaserScan& scan);
   // Plate sightings made at `stamp_s`, with the odometry at that stamp; with no sightings, the camera's
   // progress (camera_wait_s > 0: it has reported every image up to stamp_s). Throws std::invalid_argument
-  // (naming the field, "PlateSighting.bearing_rad ...") for a malformed sighting or a non-finite stamp or
+  // (naming the field, "PlateReading.bearing_rad ...") for a malformed sighting or a non-finite stamp or
   // pose; nothing of the call is kept then.
-  MappingUpdate AddPlates(double stamp_s, const Pose2D& base_in_odom, const std::vector<PlateSighting>& sightings);
+  MappingUpdate AddPlates(double stamp_s, const Pose2D& base_in_odom, const std::vector<PlateReading>& sightings);
   // The end of the input: every scan waiting for the camera goes to the filter and every held sighting is
   // applied, in stamp order (a held sighting without a scan near its stamp gets kNoRange). Call before the
   // last Solve() of a log; the nodelet calls it when it shuts down.
@@ -175,18 +175,18 @@ class MappingSession {
  private:
   struct TimedScan {
     double stamp_s;
-    RangeScan scan;
+    LaserScan scan;
   };
   struct HeldPlate {
     double stamp_s;
     Pose2D base_in_odom;
-    PlateSighting sighting;
+    PlateReading sighting;
   };
   struct WaitingScan {
     double stamp_s;
     Pose2D base_in_odom;
     int index;  // among the AddScan calls; with camera_wait_s > 0 among the scans taken, in stamp order
-    RangeScan scan;
+    LaserScan scan;
   };
   bool Ordering() const { return options_.camera_wait_s > 0; }
   // Why a scan of `stamp_s` is refused ("" if not): not after the previous one; with camera_wait_s > 0, not
@@ -205,7 +205,7 @@ class MappingSession {
   // True when a scan nearer in time to `stamp_s` may still arrive: none within the age limit, none newer.
   bool ScanMayStillCome(double stamp_s) const;
   // Range rule + TextSlam::AddPlate; the outcome goes to update->plates. Returns whether it was used.
-  bool ApplyPlate(double stamp_s, const Pose2D& base_in_odom, const PlateSighting& given, MappingUpdate* update);
+  bool ApplyPlate(double stamp_s, const Pose2D& base_in_odom, const PlateReading& given, MappingUpdate* update);
   void RefreshMapToOdom(MappingUpdate* update);
 
   const MappingSessionOptions options_;

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "doorplate_localization/slam/motion_model.h"
-#include "doorplate_localization/slam/range_scan.h"
+#include "doorplate_localization/sensors/laser_scan.h"
 #include "doorplate_localization/slam/scan_matcher.h"
 #include "doorplate_localization/slam/slam_landmark.h"
 #include "doorplate_localization/slam/tiled_grid.h"
@@ -79,7 +79,7 @@ class RbpfSlam {
   // if the scan was processed: the first scan, or after the update thresholds were exceeded, or
   // `force_update` (gmapping's temporalUpdate: process it whatever the motion).
   // `scan_index` is recorded in the trajectories. Throws std::invalid_argument on a bad scan geometry.
-  bool AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index, bool force_update = false);
+  bool AddScan(const LaserScan& scan, const Pose2D& odometry_pose, int scan_index, bool force_update = false);
 
   // Hook for other evidence (e.g. text landmarks): calls log_likelihood once per particle, in order,
   // with the particle itself; adds the result to its log-weight (untempered) and resamples if Neff
@@ -111,9 +111,9 @@ class RbpfSlam {
   const RbpfSlamOptions& options() const { return options_; }
   // Adds `scan` taken at `pose` (base_link in the map frame) to `map` by the filter's own beam rules
   // (echoes, cut beams, no-echo beams; docs/slam.md "Ranges"): how a back end re-renders a trajectory.
-  void IntegrateScanInto(TiledGrid* map, const RangeScan& scan, const Pose2D& pose) const;
+  void IntegrateScanInto(TiledGrid* map, const LaserScan& scan, const Pose2D& pose) const;
   // The scan's echoes used for matching (at most max_match_points, evenly subsampled), in base_link.
-  std::vector<Vec2> MatchPoints(const RangeScan& scan) const { return PrepareScan(scan).match; }
+  std::vector<Vec2> MatchPoints(const LaserScan& scan) const { return PrepareScan(scan).match; }
 
  private:
   struct ScanPoints {
@@ -125,7 +125,7 @@ class RbpfSlam {
     bool degenerate = false;                       // ...if its information is below degenerate_min_points
     double along_axis_gain = 1.0;                  // share of the correction kept along that axis, 0-1
   };
-  ScanPoints PrepareScan(const RangeScan& scan) const;
+  ScanPoints PrepareScan(const LaserScan& scan) const;
   int BestIndex() const;
   void Integrate(TiledGrid& map, const Pose2D& pose, const ScanPoints& points) const;
   // Resamples if Neff is low; then, if `scan` is given, adds it to every particle's map (once per

@@ -22,6 +22,7 @@
 #include "doorplate_localization/maps/occupancy_grid.h"
 #include "doorplate_localization/maps/text_map.h"
 #include "doorplate_localization/sensors/plate_range.h"
+#include "doorplate_localization/sensors/plate_reading.h"
 #include "doorplate_localization/slam/rbpf_slam.h"
 #include "doorplate_localization/slam/slam_back_end.h"
 
@@ -52,19 +53,6 @@ struct TextSlamOptions {
   SlamBackEndOptions back_end;
 };
 
-// One doorplate reading, made at the time of the odometry pose passed with it.
-struct PlateSighting {
-  std::string text;                 // the validated room number, e.g. "214"; not empty
-  double confidence = 1.0;          // probability that `text` is right, [0, 1]
-  double bearing_rad = 0.0;         // plate centre seen from base_link, CCW from x forward, [-pi, pi]
-  std::optional<double> range_m;    // base_link -> plate centre on the floor plane; unset: kNoRange
-                                    // (MappingSession sets it from a scan, sensors/plate_range.h)
-};
-
-// Throws std::invalid_argument naming the field ("PlateSighting.bearing_rad: ...") for NaN or out-of-range
-// fields or an empty text.
-void ValidatePlateSighting(const PlateSighting& sighting);
-
 enum class PlateOutcome {
   kNewLandmark,          // used: first reading of this text near here, a landmark was added
   kReobserved,           // used: matched an existing landmark, particles were reweighted
@@ -92,13 +80,13 @@ class TextSlam {
   // As RbpfSlam::AddScan (force_update: process it whatever the motion, gmapping's temporalUpdate). With the
   // back end on, a processed scan is kept for re-rendering. Throws std::invalid_argument for a non-finite
   // odometry pose (nothing is added).
-  bool AddScan(const RangeScan& scan, const Pose2D& odometry_pose, int scan_index, bool force_update = false);
+  bool AddScan(const LaserScan& scan, const Pose2D& odometry_pose, int scan_index, bool force_update = false);
 
   // A doorplate read at the time of `odometry_pose` (base_link in odom); it is tied to the last processed
   // scan by the odometry between the two (either way in time). Never throws on a reading that is merely
   // unusable (returns why it was ignored); throws std::invalid_argument naming the field
-  // ("PlateSighting.bearing_rad ...") for NaN or out-of-range fields or an empty text.
-  TextSlamPlateResult AddPlate(const PlateSighting& sighting, const Pose2D& odometry_pose);
+  // ("PlateReading.bearing_rad ...", ValidatePlateReading) for NaN or out-of-range fields or an empty text.
+  TextSlamPlateResult AddPlate(const PlateReading& sighting, const Pose2D& odometry_pose);
 
   // Solves the back end's graph over every node and plate reading so far and keeps the result for the
   // getters below (no-op with the back end off or before the first scan). The only call that solves.
@@ -137,7 +125,7 @@ class TextSlam {
   RoomIdGrammar room_grammar_;          // options_.room_pattern
   RbpfSlam slam_;
   SlamBackEnd back_end_;
-  std::vector<RangeScan> node_scans_;   // the processed scans, for re-rendering (back end on)
+  std::vector<LaserScan> node_scans_;   // the processed scans, for re-rendering (back end on)
   std::optional<SlamBackEndResult> solved_;  // the last Solve()
   int next_landmark_id_ = 0;
   // eq. 13 by odometry: per landmark id, the plate's position in the odometry frame at its first reading.

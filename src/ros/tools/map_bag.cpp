@@ -144,7 +144,7 @@ int MapBag(const Args& args) {
   dl::ReadBag(args.bag, topics, [&](const rosbag::MessageInstance& m, const dl::BagPosition& at) {
     if (const auto scan_msg = m.instantiate<sensor_msgs::LaserScan>()) {
       ++n.scans;
-      dl::RangeScan scan;
+      dl::LaserScan scan;
       dl::Pose2D odom_pose;
       const std::string problem = dl::PrepareSlamScan(*scan_msg, lookup, args.frames, &scan, &odom_pose);
       if (!problem.empty()) return Warn(&n.scans_dropped, args.scan_topic, problem);
@@ -155,7 +155,7 @@ int MapBag(const Args& args) {
       CountPlates(update.plates, &n);  // sightings recorded before the scans near their stamp
     } else if (const auto array = m.instantiate<dl::TextDetectionArray>()) {
       ++n.arrays;
-      std::vector<dl::PlateSighting> sightings;
+      std::vector<dl::PlateReading> sightings;
       std::vector<std::string> rejected;
       dl::Pose2D odom_pose;
       const std::string problem = dl::PrepareSlamSightings(*array, lookup, args.frames, &sightings, &odom_pose, &rejected);

@@ -1,7 +1,8 @@
-#include "doorplate_localization/mcl/plate_reading.h"
+#include "doorplate_localization/sensors/plate_reading.h"
 
 #include <cmath>
 
+#include "doorplate_localization/common/geometry2d.h"
 #include "doorplate_localization/common/limits.h"
 #include "doorplate_localization/common/room_id.h"
 
@@ -30,6 +31,20 @@ std::string ValidatePlateReading(const PlateReading& reading) {
            std::to_string(reading.bearing_rad);
   }
   return "";
+}
+
+double BearingInBase(const CameraAxis& axis, double image_bearing_rad) {
+  const double bearing_rad = axis.yaw_rad + axis.bearing_sign * image_bearing_rad;
+  return std::isfinite(bearing_rad) ? NormalizeAngle(bearing_rad) : bearing_rad;
+}
+
+PlateReading PlateReadingFromCamera(const std::string& text, double confidence, const CameraAxis& axis,
+                                    double image_bearing_rad) {
+  PlateReading reading;
+  reading.text = text;
+  reading.confidence = confidence;
+  reading.bearing_rad = BearingInBase(axis, image_bearing_rad);
+  return reading;
 }
 
 std::string CanonicalPlateText(const std::string& text) { return CanonicalRoomId(text); }

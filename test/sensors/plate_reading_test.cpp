@@ -1,8 +1,9 @@
-#include "doorplate_localization/mcl/plate_reading.h"
+#include "doorplate_localization/sensors/plate_reading.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace doorplate_localization {
@@ -50,6 +51,28 @@ TEST(ValidatePlateReading, RefusesATextLongerThanTheLimitWithoutQuotingIt) {
 TEST(CanonicalPlateText, UppercasesAndDropsSpacesAndDashes) {
   EXPECT_EQ(CanonicalPlateText(" b-12 "), "B12");
   EXPECT_EQ(CanonicalPlateText("214"), "214");
+}
+
+TEST(PlateReadingFromCamera, ComposesTheBearingWrapsItAndLeavesRangeAndCameraSideUnknown) {
+  const PlateReading left = PlateReadingFromCamera("214", 0.8, CameraAxis{M_PI / 2.0, 1.0}, 0.1);
+  EXPECT_EQ(left.text, "214");
+  EXPECT_EQ(left.confidence, 0.8);
+  EXPECT_NEAR(left.bearing_rad, M_PI / 2.0 + 0.1, 1e-12);  // towards the image's left: further forward
+  EXPECT_FALSE(left.range_m.has_value());
+  EXPECT_EQ(left.camera_side, CameraSide::kUnknown);
+  EXPECT_EQ(ValidatePlateReading(left), "");
+  // Upside down: the image's left is the other way round; and the sum is wrapped into (-pi, pi].
+  EXPECT_NEAR(PlateReadingFromCamera("214", 0.8, CameraAxis{M_PI / 2.0, -1.0}, 0.1).bearing_rad, M_PI / 2.0 - 0.1,
+              1e-12);
+  EXPECT_NEAR(BearingInBase(CameraAxis{M_PI - 0.05, 1.0}, 0.1), -M_PI + 0.05, 1e-12);
+}
+
+TEST(PlateReadingFromCamera, KeepsANonFiniteBearingForTheValidationToName) {
+  const PlateReading bad =
+      PlateReadingFromCamera("214", 0.8, CameraAxis{}, std::numeric_limits<double>::quiet_NaN());
+  EXPECT_TRUE(std::isnan(bad.bearing_rad));
+  EXPECT_NE(ValidatePlateReading(bad).find("PlateReading.bearing_rad"), std::string::npos);
+  EXPECT_TRUE(std::isinf(BearingInBase(CameraAxis{}, std::numeric_limits<double>::infinity())));
 }
 
 }  // namespace
