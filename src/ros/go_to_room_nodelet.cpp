@@ -320,14 +320,10 @@ class GoToRoomNodelet : public nodelet::Nodelet {
       std::string problem;
       const std::optional<Pose2D> odom = LookupPose(options_.odom_frame_id, msg->header.stamp, &problem);
       std::optional<bool> left;
-      try {
-        left = CameraLooksLeft(tf_buffer_
-                                   .lookupTransform(options_.base_frame_id, msg->header.frame_id, msg->header.stamp,
-                                                    ros::Duration(options_.tf_timeout_s))
-                                   .transform);
+      if (const auto camera = LookupTransform(tf_buffer_, options_.base_frame_id, msg->header.frame_id,
+                                              msg->header.stamp, options_.tf_timeout_s, &problem)) {
+        left = CameraLooksLeft(*camera);
         if (!left) problem = "camera frame '" + msg->header.frame_id + "' does not look sideways";
-      } catch (const tf2::TransformException& e) {
-        problem = std::string("no tf ") + options_.base_frame_id + " -> " + msg->header.frame_id + ": " + e.what();
       }
       if (!odom || !left) {
         NODELET_WARN_THROTTLE(5.0, "%s: read '%s' but cannot use it for eq. 15: %s", detections_sub_.getTopic().c_str(),
@@ -356,7 +352,7 @@ class GoToRoomNodelet : public nodelet::Nodelet {
   }
 
   std::string NoPose(const std::string& frame, const std::string& problem) const {
-    return "no tf " + frame + " -> " + options_.base_frame_id + " (" + problem + ")";
+    return "no pose in '" + frame + "' (" + problem + ")";
   }
 
   // "waiting_for_pose: room R: <why>; not driving" on ~status and (throttled) the log; `stop`: a zero command.

@@ -61,6 +61,7 @@
 #include "doorplate_localization/ros/pose_conversions.h"
 #include "doorplate_localization/ros/slam_conversions.h"
 #include "doorplate_localization/ros/text_detection_conversions.h"
+#include "doorplate_localization/ros/tf_lookup.h"
 #include "doorplate_localization/slam/mapping_session.h"
 #include "map_tool_output.h"  // src/tools: the map pair and trajectory file, as the offline tools write them
 #include "scan_tf_filter.h"
@@ -138,12 +139,7 @@ class SlamMappingNodelet : public nodelet::Nodelet {
   // A transform target <- source at `stamp`, or nullopt with *problem set (waits up to tf_timeout_s).
   std::optional<geometry_msgs::Transform> Lookup(const std::string& target, const std::string& source,
                                                  const ros::Time& stamp, std::string* problem) const {
-    try {
-      return tf_buffer_->lookupTransform(target, source, stamp, ros::Duration(options_.tf_timeout_s)).transform;
-    } catch (const tf2::TransformException& e) {
-      *problem = "no tf " + target + " -> " + source + " at " + std::to_string(stamp.toSec()) + ": " + e.what();
-      return std::nullopt;
-    }
+    return LookupTransform(*tf_buffer_, target, source, stamp, options_.tf_timeout_s, problem);
   }
 
   // A scan not taken: a throttled warning naming the topic, counted for /diagnostics. Call with mutex_ held.

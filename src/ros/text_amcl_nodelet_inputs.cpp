@@ -64,18 +64,16 @@ void TextAmclNodelet::OnDetections(const TextDetectionArray::ConstPtr& msg) {
                       topic.c_str());
     return;
   }
-  geometry_msgs::TransformStamped camera;
-  try {
-    camera = tf_buffer_.lookupTransform(options_.base_frame_id, msg->header.frame_id, msg->header.stamp,
-                                        ros::Duration(options_.tf_timeout_s));
-  } catch (const tf2::TransformException& e) {
-    NODELET_WARN_THROTTLE(2.0, "%s: no tf from '%s' to %s: %s; detections ignored", topic.c_str(),
-                          limits::TruncateForLog(msg->header.frame_id).c_str(), options_.base_frame_id.c_str(),
-                          e.what());
+  std::string tf_problem;
+  const std::optional<geometry_msgs::Transform> camera =
+      LookupTransform(tf_buffer_, options_.base_frame_id, msg->header.frame_id,
+                      msg->header.stamp, options_.tf_timeout_s, &tf_problem);
+  if (!camera) {
+    NODELET_WARN_THROTTLE(2.0, "%s: %s; detections ignored", topic.c_str(), tf_problem.c_str());
     return;
   }
   CameraAxis axis;
-  const std::string axis_problem = ToCameraAxis(camera.transform, &axis);
+  const std::string axis_problem = ToCameraAxis(*camera, &axis);
   if (!axis_problem.empty()) {
     NODELET_WARN_THROTTLE(2.0, "%s: camera frame '%s' in %s: %s; detections ignored", topic.c_str(),
                           msg->header.frame_id.c_str(), options_.base_frame_id.c_str(), axis_problem.c_str());

@@ -26,6 +26,7 @@
 #include "doorplate_localization/TextDetectionArray.h"
 #include "doorplate_localization/ros/scan_conversions.h"
 #include "doorplate_localization/ros/text_detection_conversions.h"
+#include "doorplate_localization/ros/tf_lookup.h"
 #include "wall_follower_options.h"
 
 namespace doorplate_localization {
@@ -86,24 +87,16 @@ class WallFollowerNodelet : public nodelet::Nodelet {
     double yaw_in_base = 0.0;
     Pose2D odom_pose;
     if (problem.empty()) {
-      try {
-        const auto tf = tf_buffer_.lookupTransform(options_.base_frame_id, scan->header.frame_id, scan->header.stamp,
-                                                   ros::Duration(0.1));
-        yaw_in_base = tf2::getYaw(tf.transform.rotation);
-      } catch (const tf2::TransformException& e) {
-        problem = std::string("no tf from ") + scan->header.frame_id + " to " + options_.base_frame_id + ": " + e.what();
-      }
+      const std::optional<Pose2D> laser_in_base =
+          LookupPlanarPose(tf_buffer_, options_.base_frame_id, scan->header.frame_id, scan->header.stamp, 0.1, &problem);
+      if (laser_in_base) yaw_in_base = laser_in_base->theta_rad;
     }
     if (problem.empty() && (sweep_ || explorer_)) {
-      try {
-        // The latest odometry, not the one at the scan's stamp: the turn is measured by the yaw change, which
-        // a few tens of milliseconds of latency do not disturb, while waiting for the stamp can time out.
-        const auto tf = tf_buffer_.lookupTransform(options_.odom_frame_id, options_.base_frame_id, ros::Time(0),
-                                                   ros::Duration(0.1));
-        odom_pose = {tf.transform.translation.x, tf.transform.translation.y, tf2::getYaw(tf.transform.rotation)};
-      } catch (const tf2::TransformException& e) {
-        problem = std::string("no tf from ") + options_.base_frame_id + " to " + options_.odom_frame_id + ": " + e.what();
-      }
+      // The latest odometry, not the one at the scan's stamp: the turn is measured by the yaw change, which
+      // a few tens of milliseconds of latency do not disturb, while waiting for the stamp can time out.
+      const std::optional<Pose2D> base_in_odom =
+          LookupPlanarPose(tf_buffer_, options_.odom_frame_id, options_.base_frame_id, ros::Time(0), 0.1, &problem);
+      if (base_in_odom) odom_pose = *base_in_odom;
     }
     if (!problem.empty()) {
       NODELET_ERROR_THROTTLE(2.0, "%s: %s; stopping", scan_sub_.getTopic().c_str(), problem.c_str());

@@ -89,7 +89,7 @@ TEST(WallFollowerNodelet, StopsOnBadScansNamingTheTopicAndDrivesAgainOnAGoodOne)
   const Case cases[] = {
       {"NaN increment", [](sensor_msgs::LaserScan* s) { s->angle_increment = kNaN; }, "angle_increment must be finite"},
       {"no ranges", [](sensor_msgs::LaserScan* s) { s->ranges.clear(); }, "no ranges"},
-      {"unknown frame", [](sensor_msgs::LaserScan* s) { s->header.frame_id = "nowhere"; }, "no tf from nowhere"},
+      {"unknown frame", [](sensor_msgs::LaserScan* s) { s->header.frame_id = "nowhere"; }, "no tf from 'nowhere' to 'base_link'"},
   };
   for (const Case& c : cases) {
     const sensor_msgs::LaserScan scan = bad(c.spoil);

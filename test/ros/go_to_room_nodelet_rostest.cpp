@@ -149,7 +149,7 @@ TEST(GoToRoomNodelet, WithoutAMapPoseARequestWaitsNamingTheFramesAndNothingDrive
   request.publish(msg);
   EXPECT_TRUE(WaitFor([&] {
     return !l.statuses.empty() &&
-           StartsWith(l.statuses.back(), "waiting_for_pose: room 105: no tf no_localizer_map -> base_link");
+           StartsWith(l.statuses.back(), "waiting_for_pose: room 105: no pose in 'no_localizer_map' (no tf from 'base_link' to 'no_localizer_map': ");
   })) << (l.statuses.empty() ? "no status" : l.statuses.back());
   const int scans_then = l.scans;
   EXPECT_TRUE(WaitFor([&] { return l.scans >= scans_then + 20; })) << "the simulator stopped scanning";

@@ -5,8 +5,13 @@
 
 #include <cmath>
 
+#include <string>
+
+#include <boost/make_shared.hpp>
 #include <geometry_msgs/TransformStamped.h>
+#include <ros/message_traits.h>
 #include <ros/time.h>
+#include <rosbag/bag.h>
 #include <tf2_msgs/TFMessage.h>
 
 #include "doorplate_localization/ros/sim_conversions.h"
@@ -34,6 +39,19 @@ inline tf2_msgs::TFMessage SimStaticTf(const Simulator& sim, const ros::Time& st
   camera.transform.rotation.w = std::sqrt(0.5);
   statics.transforms.push_back(camera);
   return statics;
+}
+
+// Writes /tf_static as `rosbag record` does: on a latched connection, so that rosbag play latches it and a
+// node whose tf listener connects after the first message still gets the mountings (without the flag, play
+// publishes it once, 0.2 s after advertising, and a late subscriber never sees the static frames).
+inline void WriteStaticTf(rosbag::Bag* bag, const ros::Time& stamp, const tf2_msgs::TFMessage& statics) {
+  auto header = boost::make_shared<ros::M_string>();
+  (*header)["callerid"] = "/doorplate_test_recorder";
+  (*header)["latching"] = "1";
+  (*header)["type"] = ros::message_traits::datatype(statics);
+  (*header)["md5sum"] = ros::message_traits::md5sum(statics);
+  (*header)["message_definition"] = ros::message_traits::definition(statics);
+  bag->write("/tf_static", stamp, statics, header);
 }
 
 }  // namespace doorplate_localization::test

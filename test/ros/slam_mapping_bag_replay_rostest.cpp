@@ -49,7 +49,7 @@ int WriteBag(const std::string& path) {
   Simulator sim(test::RectangleCorridor(24.0, kCorridorWidthM), SimulatorOptions{});
   rosbag::Bag bag(path, rosbag::bagmode::Write);
   const ros::Time t0(100.0);
-  bag.write("/tf_static", t0, test::SimStaticTf(sim, t0));
+  test::WriteStaticTf(&bag, t0, test::SimStaticTf(sim, t0));
 
   std::vector<double> plates_x;  // left (north) wall
   for (double x = 2.5; x < 21.0; x += 2.5) plates_x.push_back(x);
@@ -128,9 +128,11 @@ TEST(SlamMappingBagReplay, TheNodeletFedByRosbagPlayMapsTheBagAsTheOfflineToolDo
   ASSERT_EQ(offline_map.landmarks.size(), 8u);
   ASSERT_GT(offline_path.size(), 30u);
 
-  // The nodelet: rosbag play at 2x; then ~save_maps until everything played has been mapped.
+  // The nodelet: rosbag play at 2x, 2 s after it advertised (its subscriptions are connected by then: the first
+  // scan, 0.1 s after the latched /tf_static, finds the mountings); then ~save_maps until everything played has
+  // been mapped.
   ASSERT_TRUE(WaitFor([] { return ros::service::exists("/slam_mapping/save_maps", false); }, 60.0));
-  ASSERT_EQ(RunCommand("rosbag play --clock -q -r 2 " + bag + " > " + (dir / "play.log").string() + " 2>&1"), 0);
+  ASSERT_EQ(RunCommand("rosbag play --clock -q -d 2 -r 2 " + bag + " > " + (dir / "play.log").string() + " 2>&1"), 0);
   ros::ServiceClient save = ros::NodeHandle().serviceClient<std_srvs::Trigger>("/slam_mapping/save_maps");
   std::map<int, Pose2D> nodelet_path;
   std::string last_message;

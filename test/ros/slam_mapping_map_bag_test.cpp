@@ -43,7 +43,7 @@ BagRun WriteBag(const std::string& path) {
   Simulator sim(test::RectangleCorridor(10.0, 2.0), SimulatorOptions{});
   rosbag::Bag bag(path, rosbag::bagmode::Write);
   const ros::Time t0(100.0);
-  bag.write("/tf_static", t0, test::SimStaticTf(sim, t0));
+  test::WriteStaticTf(&bag, t0, test::SimStaticTf(sim, t0));
 
   BagRun run;
   run.world_to_odom = sim.true_pose().Compose(sim.odom_pose().Inverse());

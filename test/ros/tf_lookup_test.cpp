@@ -1,4 +1,4 @@
-// Tests of LookupPlanarPose (tf_lookup.h) on a tf2 buffer filled by hand (no ROS master).
+// Tests of LookupTransform and LookupPlanarPose (tf_lookup.h) on a tf2 buffer filled by hand (no ROS master).
 #include "doorplate_localization/ros/tf_lookup.h"
 
 #include <gtest/gtest.h>
@@ -47,6 +47,24 @@ TEST_F(TfLookupTest, AMissingFrameOrStampIsAProblemNamingBothFrames) {
   EXPECT_EQ(problem_.rfind("no tf from 'base_link' to 'map': ", 0), 0u) << problem_;
   EXPECT_FALSE(LookupPlanarPose(buffer_, "odom", "base_link", ros::Time(20.0), 0.0, &problem_).has_value());
   EXPECT_EQ(problem_.rfind("no tf from 'base_link' to 'odom': ", 0), 0u) << problem_;
+}
+
+TEST_F(TfLookupTest, AFixedBufferGivesTheTransformWithTheSameProblemText) {
+  const tf2::BufferCore& core = buffer_;  // what doorplate_map_bag reads a bag's tf into
+  const std::optional<geometry_msgs::Transform> t = LookupTransform(core, "odom", "base_link", ros::Time(10.0), &problem_);
+  ASSERT_TRUE(t.has_value()) << problem_;
+  EXPECT_NEAR(t->translation.x, 1.0, 1e-9);
+  EXPECT_FALSE(LookupTransform(core, "odom", "camera", ros::Time(10.0), &problem_).has_value());
+  EXPECT_EQ(problem_.rfind("no tf from 'camera' to 'odom': ", 0), 0u) << problem_;
+  EXPECT_FALSE(LookupTransform(buffer_, "odom", "camera", ros::Time(10.0), 0.0, &problem_).has_value());
+  EXPECT_EQ(problem_.rfind("no tf from 'camera' to 'odom': ", 0), 0u) << problem_;
+}
+
+TEST_F(TfLookupTest, AHugeFrameNameIsQuotedByItsStartOnly) {
+  const std::string huge(1 << 20, 'f');
+  EXPECT_FALSE(LookupTransform(buffer_, "odom", huge, ros::Time(0), 0.0, &problem_).has_value());
+  EXPECT_EQ(problem_.rfind("no tf from 'fff", 0), 0u) << problem_.substr(0, 200);
+  EXPECT_LT(problem_.size(), 1000u);
 }
 
 }  // namespace

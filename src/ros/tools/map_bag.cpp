@@ -31,6 +31,7 @@
 #include "doorplate_localization/maps/map_io.h"
 #include "doorplate_localization/maps/text_map.h"
 #include "doorplate_localization/ros/slam_conversions.h"
+#include "doorplate_localization/ros/tf_lookup.h"
 #include "doorplate_localization/slam/mapping_session.h"
 #include "doorplate_localization/slam/rbpf_slam_options.h"
 
@@ -126,12 +127,7 @@ int MapBag(const Args& args) {
   const dl::TransformLookup lookup = [&tf](const std::string& target, const std::string& source,
                                            const ros::Time& stamp, std::string* problem)
       -> std::optional<geometry_msgs::Transform> {
-    try {
-      return tf->lookupTransform(target, source, stamp).transform;
-    } catch (const tf2::TransformException& e) {
-      *problem = "no tf " + target + " -> " + source + " at " + std::to_string(stamp.toSec()) + ": " + e.what();
-      return std::nullopt;
-    }
+    return dl::LookupTransform(*tf, target, source, stamp, problem);
   };
 
   std::vector<std::string> topics{args.scan_topic};
