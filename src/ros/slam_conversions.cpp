@@ -104,11 +104,16 @@ std::optional<PlateReading> ToPlateSighting(const TextDetection& msg, const Came
   } else {
     problem = ValidateTextDetection(msg);
   }
+  std::optional<PlateReading> reading;
+  if (problem.empty()) {
+    reading = PlateReadingFromCamera(msg.text, msg.confidence, camera, msg.bearing_rad);
+    problem = ValidatePlateReading(*reading);  // what the mapping session accepts (e.g. a text of separators only)
+  }
   if (!problem.empty()) {
     if (why_not != nullptr) *why_not = problem;
     return std::nullopt;
   }
-  return PlateReadingFromCamera(msg.text, msg.confidence, camera, msg.bearing_rad);
+  return reading;
 }
 
 std::string PrepareSlamScan(const sensor_msgs::LaserScan& msg, const TransformLookup& lookup,

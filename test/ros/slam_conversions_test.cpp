@@ -129,6 +129,11 @@ TEST(ToPlateSighting, SkipsDetectionsAwayFromTheCentreEmptyOrBroken) {
   d.bearing_rad = kNaN;
   EXPECT_FALSE(ToPlateSighting(d, CameraAxis{0.0, 1.0}, &why));
   EXPECT_NE(why.find("bearing_rad"), std::string::npos);
+  // What the mapping session would refuse is refused here (a fuzzing find): a text of separators only.
+  d.bearing_rad = 0.0;
+  d.text = "-";
+  EXPECT_FALSE(ToPlateSighting(d, CameraAxis{0.0, 1.0}, &why));
+  EXPECT_EQ(why, "PlateReading.text: empty");
 }
 
 // Issue 18: a 1 MB detection text reached the mapping session and its log line whole.
