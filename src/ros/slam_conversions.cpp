@@ -49,7 +49,7 @@ std::string ToLaserMounting(const geometry_msgs::Transform& base_to_laser, Laser
 }
 
 std::string ToMappingScan(const sensor_msgs::LaserScan& msg, const LaserMounting& mounting, double max_range_m,
-                        int min_valid_beams, LaserScan* out) {
+                          int min_valid_beams, LaserScan* out) {
   std::string problem = ValidateScan(msg);
   if (!problem.empty()) return problem;
   // Drivers disagree on whether angle_max is the last beam's angle: allow one beam either way.
@@ -92,7 +92,7 @@ std::string ToMappingScan(const sensor_msgs::LaserScan& msg, const LaserMounting
 }
 
 std::optional<PlateReading> ToPlateSighting(const TextDetection& msg, const CameraAxis& camera,
-                                             std::string* why_not) {
+                                            std::string* why_not) {
   std::string problem;
   if (!msg.crossed_center) {
     problem = "not at the image-centre crossing";

@@ -53,8 +53,8 @@ Pose2D MapToOdom(const Pose2D& base_in_map, const Pose2D& base_in_odom);
 
 // --- cameras ---
 // The camera's optical axis (CameraAxis, sensors/plate_reading.h) from its optical frame (z forward, x right,
-// y down; the sensor_msgs/Image convention) in base_link. Returns "" and fills *axis, or the problem (an optical axis more than 25° out of the floor plane, where
-// a plate bearing is meaningless); *axis is left alone on error. A plate seen at image bearing b lies at
+// y down; the sensor_msgs/Image convention) in base_link. Returns "" and fills *axis, or the problem (an
+// optical axis more than 25° out of the floor plane, where a plate bearing is meaningless); *axis is left alone on error. A plate seen at image bearing b lies at
 // yaw_rad + bearing_sign * b in base_link (BearingInBase).
 std::string ToCameraAxis(const geometry_msgs::Transform& optical_in_base, CameraAxis* axis);
 

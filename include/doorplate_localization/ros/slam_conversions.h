@@ -35,22 +35,22 @@ struct LaserMounting {
 // transform, or a laser whose scan plane is tilted more than ~8° from the floor plane (no 2D map then).
 std::string ToLaserMounting(const geometry_msgs::Transform& base_to_laser, LaserMounting* mounting);
 
-// Converts a LaserScan into the core's LaserScan (beam angles in the laser frame, upside-down mountings
+// Converts a sensor_msgs/LaserScan into the core's LaserScan for the mapper (beam angles in the laser frame, upside-down mountings
 // mirrored, `laser_pose` = the mounting's pose). Readings: +inf, or >= `max_range_m` (<= 0: the scan's
 // range_max) or > range_max, mean "no echo" (+inf: free space up to the core's clear range); NaN, -inf
 // and readings below range_min are invalid (NaN, skipped). Returns "" and fills *out, or the problem
 // (ValidateScan's, ranges that do not fit angle_min..angle_max, or fewer than `min_valid_beams`
 // finite returns); *out is left alone on error.
 std::string ToMappingScan(const sensor_msgs::LaserScan& msg, const LaserMounting& mounting, double max_range_m,
-                        int min_valid_beams, LaserScan* out);
+                          int min_valid_beams, LaserScan* out);
 
 // A detection as a SLAM plate sighting: the bearing composed with the camera axis (base_link, CCW:
 // camera.yaw_rad + camera.bearing_sign * bearing_rad, wrapped to (-pi, pi]), the confidence, no range
 // (the mapping session takes it from the scan nearest in time). nullopt, with *why_not set, for detections the mapper does not
-// use: not at the image-centre crossing, an empty text, a text longer than limits::kMaxPlateTextBytes, or a
-// detection ValidateTextDetection rejects.
+// use: not at the image-centre crossing, an empty text, a text longer than limits::kMaxPlateTextBytes, a
+// detection ValidateTextDetection rejects, or a reading ValidatePlateReading rejects (what the session refuses).
 std::optional<PlateReading> ToPlateSighting(const TextDetection& msg, const CameraAxis& camera,
-                                             std::string* why_not);
+                                            std::string* why_not);
 
 // A tf lookup: the transform `target` <- `source` at `stamp` (i.e. `source` expressed in `target`), or
 // nullopt with *problem set. The nodelet wraps its tf2_ros::Buffer, doorplate_map_bag a tf2::BufferCore.
