@@ -69,7 +69,7 @@ Row Measure(const std::shared_ptr<const LocalizationGrid>& grid, int particles, 
   o.min_particles = o.max_particles = particles;  // pin the count: measure the same N every time
   TextAmclModels models;
   models.grid = grid;
-  models.motion = std::make_shared<DiffDriveMotionModel>(DiffDriveMotionModelOptions());
+  models.motion = std::make_shared<DiffDriveMotionModel>(OdometryMotionModelOptions());
   models.laser = model;
   models.resampler = std::make_shared<LowVarianceResampler>();
   TextAmcl amcl(o, models);

@@ -4,7 +4,6 @@ add_library(doorplate_slam
   src/slam/carmen_reader.cpp
   src/slam/correlative_search.cpp
   src/slam/mapping_session.cpp
-  src/slam/motion_model.cpp
   src/slam/pose_graph.cpp
   src/slam/rbpf_slam.cpp
   src/slam/rbpf_slam_options.cpp
@@ -41,7 +40,7 @@ if(mrpt-obs_FOUND)
 endif()
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(name carmen_reader correlative_search tiled_grid scan_matcher motion_model trajectory_tree rbpf_slam rbpf_slam_options text_slam mapping_session mapping_session_stamp_order pose_graph scan_icp slam_back_end)
+  foreach(name carmen_reader correlative_search tiled_grid scan_matcher trajectory_tree rbpf_slam rbpf_slam_options text_slam mapping_session mapping_session_stamp_order pose_graph scan_icp slam_back_end)
     doorplate_add_core_test(${name}_test test/slam/${name}_test.cpp doorplate_slam)
   endforeach()
 endif()

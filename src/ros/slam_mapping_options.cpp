@@ -26,7 +26,8 @@ struct GmappingAlias {
 
 // gmapping's defaults (slam_gmapping.cpp / ROS wiki). srr..stt: gmapping's odometry noise coefficients
 // (translation per translation, translation per rotation, rotation per translation, rotation per
-// rotation) are our motion model's standard deviations per metre / radian (motion_model.h).
+// rotation) are our motion model's standard deviations per metre / radian (its linear law,
+// sensors/odometry_motion_model.h).
 const GmappingAlias kAliases[] = {
     {"particles", "num_particles", 30, "particles"},
     {"linearUpdate", "linear_update_m", 1.0, "process a scan after driving this far (m)..."},
@@ -34,10 +35,10 @@ const GmappingAlias kAliases[] = {
     {"resampleThreshold", "resample_neff_ratio", 0.5, "resample when Neff < this × particles"},
     {"maxUrange", "max_usable_range_m", 80.0, "longer beams only clear free space (m)"},
     {"delta", "grid.resolution_m", 0.05, "map cell size (m)"},
-    {"srr", "motion.trans_stddev_m_per_m", 0.1, "odometry translation noise per metre driven"},
-    {"srt", "motion.trans_stddev_m_per_rad", 0.2, "odometry translation noise per radian turned"},
-    {"str", "motion.rot_stddev_rad_per_m", 0.1, "odometry rotation noise per metre driven"},
-    {"stt", "motion.rot_stddev_rad_per_rad", 0.2, "odometry rotation noise per radian turned"},
+    {"srr", "motion.trans_noise_from_trans", 0.1, "odometry translation noise per metre driven"},
+    {"srt", "motion.trans_noise_from_rot", 0.2, "odometry translation noise per radian turned"},
+    {"str", "motion.rot_noise_from_trans", 0.1, "odometry rotation noise per metre driven"},
+    {"stt", "motion.rot_noise_from_rot", 0.2, "odometry rotation noise per radian turned"},
 };
 
 // gmapping parameters without a counterpart (its scan matcher and likelihood are built differently, our

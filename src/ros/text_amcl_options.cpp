@@ -41,7 +41,7 @@ double& CovarianceDiagonal(O& o, int i) { return o.session.initial_covariance(i,
 TextAmclSessionOptions AmclDefaultSessionOptions() {
   TextAmclSessionOptions s;
   s.setup.likelihood_field.beams.laser_max_beams = s.setup.beam.beams.laser_max_beams = 30;
-  s.setup.motion.odom_model_type = OdomModelType::kDiff;
+  s.setup.motion.noise_law = OdometryNoiseLaw::kDiff;
   return s;
 }
 
@@ -101,15 +101,17 @@ const ParamTable<O>& TextAmclParamTable() {
       Param<O>("selective_resampling", DOORPLATE_PARAM_FIELD(selective_resampling), "true is refused (not provided)",
                {"false (not provided)", [](const ParamValue& v) { return !std::get<bool>(v); }}),
       // --- odometry (amcl) ---
-      EnumParam<O>("odom_model_type", F(motion.odom_model_type),
-                   {{"diff", OdomModelType::kDiff}, {"diff-corrected", OdomModelType::kDiffCorrected}},
+      EnumParam<O>("odom_model_type", F(motion.noise_law),
+                   {{"diff", OdometryNoiseLaw::kDiff}, {"diff-corrected", OdometryNoiseLaw::kDiffCorrected}},
                    "`diff` (amcl's, the α·δ² std dev variant; the core's default is `diff-corrected`) or "
                    "`diff-corrected`; `omni`, `omni-corrected` are refused")
           .Shipped(std::string("diff-corrected")),
-      Param<O>("odom_alpha1", F(motion.odom_alpha1), "motion noise (mcl/diff_drive_motion_model.h)", r::NonNegative()),
-      Param<O>("odom_alpha2", F(motion.odom_alpha2), "motion noise", r::NonNegative()),
-      Param<O>("odom_alpha3", F(motion.odom_alpha3), "motion noise", r::NonNegative()),
-      Param<O>("odom_alpha4", F(motion.odom_alpha4), "motion noise", r::NonNegative()),
+      Param<O>("odom_alpha1", F(motion.rot_noise_from_rot), "rotation noise from rotation (sensors/odometry_motion_model.h)",
+               r::NonNegative()),
+      Param<O>("odom_alpha2", F(motion.rot_noise_from_trans), "rotation noise from translation", r::NonNegative()),
+      Param<O>("odom_alpha3", F(motion.trans_noise_from_trans), "translation noise from translation",
+               r::NonNegative()),
+      Param<O>("odom_alpha4", F(motion.trans_noise_from_rot), "translation noise from rotation", r::NonNegative()),
       Param<O>("odom_alpha5", DOORPLATE_PARAM_FIELD(odom_alpha5), "amcl's omni alpha: validated, unused",
                r::NonNegative()),
       // --- frames, start and map (amcl) ---

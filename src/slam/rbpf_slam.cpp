@@ -137,7 +137,7 @@ bool RbpfSlam::AddScan(const LaserScan& scan, const Pose2D& odometry_pose, int s
   // The spread grows with every odometry increment, processed or not: several short moves are
   // noisier than one long move of the same length.
   pending_spread_ = OdometryMotionModel::Accumulate(
-      pending_spread_, motion_.Spread(last_received_odometry_.Between(odometry_pose)));
+      pending_spread_, motion_.Spread(last_received_odometry_, odometry_pose));
   last_received_odometry_ = odometry_pose;
   const Pose2D delta = last_odometry_.Between(odometry_pose);
   if (!force_update && std::hypot(delta.x_m, delta.y_m) < options_.linear_update_m &&
@@ -157,7 +157,7 @@ bool RbpfSlam::AddScan(const LaserScan& scan, const Pose2D& odometry_pose, int s
   const Pose2D step = wide.status == MatchResult::Status::kMatched ? best.pose.Between(wide.pose) : delta;
 
   for (SlamParticle& p : particles_) {
-    const Pose2D prior = OdometryMotionModel::Sample(p.pose, delta, spread, rng_);
+    const Pose2D prior = OdometryMotionModel::SampleIsotropic(p.pose, delta, spread, rng_);
     const MatchResult r =
         matcher_.Match(p.map, points.match, p.pose.Compose(step), matcher_.NarrowWindow(), prior, spread);
     p.pose = r.pose;

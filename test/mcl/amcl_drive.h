@@ -18,13 +18,13 @@ namespace doorplate_localization::test {
 struct FilterSetup {
   TextAmclOptions amcl;
   LikelihoodFieldModelOptions laser;
-  DiffDriveMotionModelOptions motion;
+  OdometryMotionModelOptions motion;
   PlateLikelihoodModelOptions plate;
   PlatePoseSamplerOptions sampler;
   bool with_text = true;
 
   FilterSetup() {
-    motion.odom_alpha1 = motion.odom_alpha2 = motion.odom_alpha3 = motion.odom_alpha4 = 0.02;
+    motion.rot_noise_from_rot = motion.rot_noise_from_trans = motion.trans_noise_from_trans = motion.trans_noise_from_rot = 0.02;
   }
 };
 

@@ -26,7 +26,7 @@ Stats Summarize(const std::vector<Particle>& ps) {
 }
 
 // Moves `n` particles starting at `start` by the odometry motion before -> after.
-std::vector<Particle> Move(const DiffDriveMotionModelOptions& o, const Pose2D& start, const Pose2D& before,
+std::vector<Particle> Move(const OdometryMotionModelOptions& o, const Pose2D& start, const Pose2D& before,
                            const Pose2D& after, int n = 20000, std::uint64_t seed = 7) {
   std::vector<Particle> ps(n, Particle{start, 1.0 / n});
   std::mt19937_64 rng(seed);
@@ -34,11 +34,11 @@ std::vector<Particle> Move(const DiffDriveMotionModelOptions& o, const Pose2D& s
   return ps;
 }
 
-DiffDriveMotionModelOptions Alphas(double a1, double a2, double a3, double a4,
-                                   OdomModelType type = OdomModelType::kDiffCorrected) {
-  DiffDriveMotionModelOptions o;
-  o.odom_model_type = type;
-  o.odom_alpha1 = a1, o.odom_alpha2 = a2, o.odom_alpha3 = a3, o.odom_alpha4 = a4;
+OdometryMotionModelOptions Alphas(double a1, double a2, double a3, double a4,
+                                   OdometryNoiseLaw type = OdometryNoiseLaw::kDiffCorrected) {
+  OdometryMotionModelOptions o;
+  o.noise_law = type;
+  o.rot_noise_from_rot = a1, o.rot_noise_from_trans = a2, o.trans_noise_from_trans = a3, o.trans_noise_from_rot = a4;
   return o;
 }
 
@@ -63,7 +63,7 @@ TEST(DiffDriveMotionModel, CorrectedTranslationNoiseHasStddevSqrtAlpha3TimesDist
 
 TEST(DiffDriveMotionModel, LegacyDiffUsesTheVarianceTermAsStddev) {
   // amcl's original "diff" (navigation #20): sigma = alpha3 · trans² = 0.01 · 4 = 0.04 m, not 0.2 m.
-  const auto ps = Move(Alphas(0, 0, 0.01, 0, OdomModelType::kDiff), {}, {}, {2.0, 0.0, 0.0});
+  const auto ps = Move(Alphas(0, 0, 0.01, 0, OdometryNoiseLaw::kDiff), {}, {}, {2.0, 0.0, 0.0});
   EXPECT_NEAR(Summarize(ps).sd_x, 0.04, 0.002);
 }
 
@@ -91,17 +91,14 @@ TEST(DiffDriveMotionModel, DrivingBackwardsIsAsNoisyAsForwards) {
   EXPECT_NEAR(backward.sd_theta, forward.sd_theta, 0.005);
 }
 
-TEST(DiffDriveMotionModel, ParsesAmclModelNamesAndRejectsOthers) {
-  EXPECT_EQ(ParseOdomModelType("diff"), OdomModelType::kDiff);
-  EXPECT_EQ(ParseOdomModelType("diff-corrected"), OdomModelType::kDiffCorrected);
-  EXPECT_THROW(ParseOdomModelType("omni"), std::invalid_argument);
-  DiffDriveMotionModelOptions o;
-  o.odom_alpha3 = -0.1;
+TEST(DiffDriveMotionModel, RejectsANegativeCoefficientByName) {
+  OdometryMotionModelOptions o;
+  o.trans_noise_from_trans = -0.1;
   try {
     DiffDriveMotionModel m(o);
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("odom_alpha3"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("trans_noise_from_trans"), std::string::npos) << e.what();
   }
 }
 

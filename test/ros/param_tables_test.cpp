@@ -144,7 +144,7 @@ TEST(ParamTables, TheShippedConfigsLoadWithoutWarnings) {
   const TextAmclNodeOptions o = TextAmclOptionsFrom(amcl);
   EXPECT_EQ(o.session.setup.likelihood_field.beams.laser_max_beams, 60);
   EXPECT_EQ(o.session.setup.beam.beams.laser_max_beams, 60);
-  EXPECT_EQ(o.session.setup.motion.odom_model_type, OdomModelType::kDiffCorrected);
+  EXPECT_EQ(o.session.setup.motion.noise_law, OdometryNoiseLaw::kDiffCorrected);
   const YamlSource mapping(kSource + "/config/mapping.yaml", "slam_mapping");
   const SlamMappingNodeOptions m = SlamMappingOptionsFrom(mapping);
   for (const std::string& name : TextSlamOptionNames()) {  // the core's defaults, as the offline tools run
@@ -162,7 +162,7 @@ TEST(ParamTables, UnsetTextAmclParametersAreAmclsDefaultsOneSourceForLoaderAndDo
   const TextAmclNodeOptions o = TextAmclOptionsFrom(YamlSource(YAML::Load("{}"), "amcl"));
   EXPECT_EQ(o.session.setup.likelihood_field.beams.laser_max_beams, 30);  // amcl's; the core's is 60
   EXPECT_EQ(o.session.setup.beam.beams.laser_max_beams, 30);
-  EXPECT_EQ(o.session.setup.motion.odom_model_type, OdomModelType::kDiff);  // amcl's; the core's diff-corrected
+  EXPECT_EQ(o.session.setup.motion.noise_law, OdometryNoiseLaw::kDiff);  // amcl's; the core's diff-corrected
   EXPECT_DOUBLE_EQ(o.session.setup.filter.recovery_alpha_slow, 0.001);     // documented difference
   const std::string docs = MarkdownParamTable(TextAmclParamTable());
   EXPECT_NE(docs.find("| `~laser_max_beams` | `session.setup.likelihood_field.beams.laser_max_beams` | "

@@ -43,7 +43,7 @@ TEST(LoadSlamMappingOptions, WithoutParametersUsesGmappingsDefaultsForItsNames) 
   EXPECT_EQ(o.slam.slam.linear_update_m, 1.0);
   EXPECT_EQ(o.slam.slam.angular_update_rad, 0.5);
   EXPECT_EQ(o.slam.slam.max_usable_range_m, 80.0);
-  EXPECT_EQ(o.slam.slam.motion.trans_stddev_m_per_rad, 0.2);
+  EXPECT_EQ(o.slam.slam.motion.trans_noise_from_rot, 0.2);
   EXPECT_EQ(o.map_update_interval_s, 5.0);
   EXPECT_EQ(o.temporal_update_s, -1.0);  // gmapping's: off
   EXPECT_EQ(o.base_frame, "base_link");

@@ -105,7 +105,7 @@ TEST(LoadTextAmclOptions, WithoutParametersGivesAmclsDefaultsExceptRecovery) {
   EXPECT_EQ(o.session.setup.likelihood_field.beams.laser_max_beams, 30);  // amcl's (the core's: 60)
   EXPECT_EQ(o.session.setup.beam.beams.laser_max_beams, 30);
   EXPECT_EQ(o.session.setup.laser_model_type, LaserModelType::kLikelihoodField);
-  EXPECT_EQ(o.session.setup.motion.odom_model_type, OdomModelType::kDiff);
+  EXPECT_EQ(o.session.setup.motion.noise_law, OdometryNoiseLaw::kDiff);
   EXPECT_DOUBLE_EQ(o.session.setup.filter.recovery_alpha_slow, 0.001);  // amcl: 0 (documented)
   EXPECT_DOUBLE_EQ(o.transform_tolerance_s, 0.1);
   EXPECT_DOUBLE_EQ(o.session.initial_covariance(0, 0), 0.25);
@@ -146,7 +146,7 @@ TEST(LoadTextAmclOptions, RejectsOutOfRangeMistypedAndUnsupportedValuesNamingThe
 TEST(LoadTextAmclOptions, TheShippedConfigLoads) {
   const TextAmclNodeOptions o = LoadTextAmclOptions(ros::NodeHandle("/amcl"));
   EXPECT_EQ(o.session.setup.likelihood_field.beams.laser_max_beams, 60);
-  EXPECT_EQ(o.session.setup.motion.odom_model_type, OdomModelType::kDiffCorrected);
+  EXPECT_EQ(o.session.setup.motion.noise_law, OdometryNoiseLaw::kDiffCorrected);
   EXPECT_TRUE(o.session.setup.use_text);
   EXPECT_NE(o.map_file.find("paper_sim_closed_doors.yaml"), std::string::npos);
   EXPECT_NE(o.text_map_file.find("paper_sim_closed_doors.text_map.yaml"), std::string::npos);

@@ -22,10 +22,10 @@ TEST(RbpfSlamOptions, NamesFollowTheStructFields) {
   RbpfSlamOptions options;
   SetRbpfSlamOption("matcher.field_sigma_m", 0.07, &options);
   SetRbpfSlamOption("num_particles", 12, &options);
-  SetRbpfSlamOption("motion.rot_stddev_rad_per_m", 0.03, &options);
+  SetRbpfSlamOption("motion.rot_noise_from_trans", 0.03, &options);
   EXPECT_EQ(options.matcher.field_sigma_m, 0.07);
   EXPECT_EQ(options.num_particles, 12);
-  EXPECT_EQ(options.motion.rot_stddev_rad_per_m, 0.03);
+  EXPECT_EQ(options.motion.rot_noise_from_trans, 0.03);
 }
 
 TEST(RbpfSlamOptions, UnknownNamesAndFractionalCountsAreErrorsNamingTheOption) {

@@ -213,7 +213,7 @@ TEST(RbpfSlam, TheDegeneracyAwareProposalFindsTheCorridorAxisAndLeavesPositionAl
   // motion model's spread of the true 6 m (not where a flat likelihood would leave it).
   RbpfSlamOptions options = FewParticles(10);
   options.degenerate_min_points = 10.0;
-  options.motion.trans_stddev_m_per_m = 0.02;
+  options.motion.trans_noise_from_trans = 0.02;
   RbpfSlam slam(options);
   for (int i = 0; i <= 12; ++i) {
     const Pose2D pose{0.5 * i, 0.0, 0.0};

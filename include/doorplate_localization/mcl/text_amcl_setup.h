@@ -34,7 +34,7 @@ struct TextAmclSetupOptions {
   // laser_model_type); `beam` serves "beam".
   LikelihoodFieldModelOptions likelihood_field;
   BeamModelOptions beam;
-  DiffDriveMotionModelOptions motion;
+  OdometryMotionModelOptions motion;
   // false: plain amcl — plate readings are ignored even when a text map is given.
   bool use_text = true;
   PlateLikelihoodModelOptions plate;

@@ -14,7 +14,7 @@
 #include <random>
 #include <vector>
 
-#include "doorplate_localization/slam/motion_model.h"
+#include "doorplate_localization/sensors/odometry_motion_model.h"
 #include "doorplate_localization/sensors/laser_scan.h"
 #include "doorplate_localization/slam/scan_matcher.h"
 #include "doorplate_localization/slam/slam_landmark.h"
@@ -47,7 +47,7 @@ struct RbpfSlamOptions {
   std::uint64_t seed = 1;
   TiledGridOptions grid;
   ScanMatcherOptions matcher;
-  MotionModelOptions motion;
+  OdometryMotionModelOptions motion = MapperOdometryDefaults();  // linear law, see odometry_motion_model.h
 };
 
 struct SlamParticle {

@@ -14,7 +14,7 @@
 
 #include "doorplate_localization/common/geometry2d.h"
 #include "doorplate_localization/slam/correlative_search.h"
-#include "doorplate_localization/slam/motion_model.h"
+#include "doorplate_localization/sensors/odometry_motion_model.h"
 #include "doorplate_localization/slam/tiled_grid.h"
 
 namespace doorplate_localization {
