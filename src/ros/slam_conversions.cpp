@@ -224,6 +224,9 @@ diagnostic_msgs::DiagnosticStatus ToMapperDiagnosticStatus(const MapperHealth& h
   add("scans waiting for the camera", h.scans_waiting_for_camera < 0 ? "off" : std::to_string(h.scans_waiting_for_camera));
   add("camera waits run out", std::to_string(h.camera_waits_expired));
   add("plates later than the camera wait", std::to_string(h.plates_late));
+  add("back-end solves", std::to_string(h.solves));
+  add("last solve (s)", number(h.last_solve_s, 2));
+  add("solves deferred (solve share)", std::to_string(h.solves_deferred));
   add("map", h.map.empty() ? "none yet" : h.map);
   add("last error", h.error.empty() ? "none" : limits::TruncateForLog(h.error, 200));
   return d;

@@ -277,6 +277,9 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     if (session_->options().camera_wait_s > 0) h.scans_waiting_for_camera = static_cast<int>(session_->waiting_scans());
     h.camera_waits_expired = session_->counters().scans_camera_wait_expired;
     h.plates_late = session_->counters().plates_late;
+    h.solves = session_->counters().solves;
+    h.last_solve_s = session_->counters().last_solve_wall_s;
+    h.solves_deferred = session_->counters().solves_deferred;
     if (latest_map_) {
       std::ostringstream map;
       map << latest_map_->info.width << " x " << latest_map_->info.height << " at " << latest_map_->info.resolution

@@ -64,6 +64,7 @@ MappingSessionOptions ToMappingSessionOptions(const SlamMappingNodeOptions& o) {
   session.throttle_scans = o.throttle_scans;
   session.temporal_update_s = o.temporal_update_s;
   session.map_update_interval_s = o.map_update_interval_s;
+  session.map_update_max_solve_share = o.map_update_max_solve_share;
   session.camera_wait_s = o.use_text ? o.camera_wait_s : 0.0;  // nothing to wait for without the detections
   return session;
 }
@@ -103,6 +104,11 @@ const ParamTable<O>& SlamMappingParamTable() {
         Param<O>("map_update_interval", DOORPLATE_PARAM_FIELD(map_update_interval_s),
                  "seconds (scan stamps) between back-end solves, each published on `map` / `map_metadata`",
                  r::Positive()),
+        Param<O>("map_update_max_solve_share", DOORPLATE_PARAM_FIELD(map_update_max_solve_share),
+                 "(ours) a solve's cost grows with the trajectory: a periodic solve also waits until the solves "
+                 "took at most this share of the wall clock (keeps up with the scans after hours of driving; "
+                 "~save_maps solves at once); 0: off",
+                 r::Holds("in [0, 1)", [](double v) { return v >= 0.0 && v < 1.0; })),
         Param<O>("temporalUpdate", DOORPLATE_PARAM_FIELD(temporal_update_s),
                  "also process a scan when this many seconds (scan stamps) passed since the last processed one, "
                  "moving or not; <= 0: off (gmapping's name and default)",

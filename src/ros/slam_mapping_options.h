@@ -36,6 +36,8 @@ struct SlamMappingNodeOptions {
   std::string odom_frame = "odom";          // ~odom_frame
   std::string map_frame = "map";            // ~map_frame
   double map_update_interval_s = 5.0;       // ~map_update_interval: solve and republish the map this often (scan stamps)
+  double map_update_max_solve_share = 0.3;  // ~map_update_max_solve_share: periodic solves take at most this share of
+                                            // the wall clock (MappingSessionOptions; 0: off)
   double temporal_update_s = -1.0;          // ~temporalUpdate: also process a scan this long after the last one (<= 0: off)
   double transform_publish_period_s = 0.05; // ~transform_publish_period: map -> odom period; 0 = never
   double max_range_m = 0.0;                 // ~maxRange: readings >= this are no-echo; 0 = scan's range_max
@@ -52,7 +54,8 @@ struct SlamMappingNodeOptions {
 };
 
 // The mapping session's options from the node's (slam, throttle_scans, temporal_update_s,
-// map_update_interval_s, camera_wait_s if use_text; the session's own defaults for the rest).
+// map_update_interval_s, map_update_max_solve_share, camera_wait_s if use_text; the session's own defaults
+// for the rest).
 MappingSessionOptions ToMappingSessionOptions(const SlamMappingNodeOptions& options);
 
 // Every parameter of the table: name, field, default, rule, doc line.

@@ -2,6 +2,7 @@
 #include "doorplate_localization/slam/mapping_session.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -30,6 +31,9 @@ void ValidateMappingSessionOptions(const MappingSessionOptions& o) {
     fail("plate_range_max_scan_age_s: must be finite and >= 0");
   }
   if (!(o.scan_history_s >= 0) || !std::isfinite(o.scan_history_s)) fail("scan_history_s: must be finite and >= 0");
+  if (!(o.map_update_max_solve_share >= 0 && o.map_update_max_solve_share < 1)) {
+    fail("map_update_max_solve_share: must be in [0, 1) (0: off), got " + std::to_string(o.map_update_max_solve_share));
+  }
   if (!(o.camera_wait_s >= 0 && o.camera_wait_s <= 60)) {
     fail("camera_wait_s: must be in [0, 60] seconds (0: scans do not wait for the camera), got " +
          std::to_string(o.camera_wait_s));
@@ -37,7 +41,9 @@ void ValidateMappingSessionOptions(const MappingSessionOptions& o) {
 }
 
 MappingSession::MappingSession(const MappingSessionOptions& options)
-    : options_(Validated(options)), slam_(options.slam) {}
+    : options_(Validated(options)), slam_(options.slam), wall_clock_([] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+      }) {}
 
 MappingUpdate MappingSession::AddScan(double stamp_s, const Pose2D& base_in_odom, const LaserScan& scan) {
   if (!std::isfinite(stamp_s)) throw std::invalid_argument("MappingSession::AddScan: stamp_s must be finite");
@@ -103,7 +109,11 @@ void MappingSession::ProcessScan(const WaitingScan& taken, MappingUpdate* update
   processed_scan_indices_.push_back(taken.index);
   if (options_.map_update_interval_s > 0 &&
       (!last_solve_stamp_s_ || taken.stamp_s - *last_solve_stamp_s_ >= options_.map_update_interval_s)) {
-    update->solved = Solve().solved || update->solved;
+    if (next_periodic_solve_wall_s_ && wall_clock_() < *next_periodic_solve_wall_s_) {
+      ++counters_.solves_deferred;
+    } else {
+      update->solved = Solve().solved || update->solved;
+    }
   }
 }
 
@@ -232,11 +242,16 @@ bool MappingSession::ApplyPlate(double stamp_s, const Pose2D& base_in_odom, cons
 MappingUpdate MappingSession::Solve() {
   MappingUpdate update;
   if (!started()) return update;
+  const double start_s = wall_clock_();
   slam_.Solve();
   last_solve_stamp_s_ = last_processed_stamp_s_;
   map_ = slam_.BuildOccupancyGrid();
   text_map_ = slam_.BuildTextMap();
   ++counters_.solves;
+  const double end_s = wall_clock_();
+  counters_.last_solve_wall_s = end_s - start_s;
+  const double share = options_.map_update_max_solve_share;
+  if (share > 0) next_periodic_solve_wall_s_ = end_s + counters_.last_solve_wall_s * (1.0 / share - 1.0);
   update.solved = true;
   RefreshMapToOdom(&update);
   return update;

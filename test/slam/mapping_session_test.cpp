@@ -329,6 +329,34 @@ TEST(MappingSession, MapUpdateIntervalSolvesAfterProcessedScansThatFarApartInSta
   ASSERT_TRUE(session.Map().has_value());
 }
 
+TEST(MappingSession, ASolveShareDefersPeriodicSolvesByWallClockAndLeavesTheFinalSolveAsIs) {
+  MappingSessionOptions o = FewParticles(3);
+  o.map_update_interval_s = 4.0;
+  MappingSession free_running(o);
+  o.map_update_max_solve_share = 0.25;
+  MappingSession shared(o);
+  double now = 0.0;
+  shared.SetWallClock([&now] { return now++; });  // every reading of the clock takes 1 s: a solve takes 1 s
+  std::vector<double> solved_at;
+  double t = 0.0;
+  for (const Pose2D& p : test::PosesAlongX(0.0, 5.0, 0.5)) {  // one processed scan per second, 0..10 s
+    const LaserScan scan = test::Scan(ClosedCorridor(), p, 360, 16.0);
+    free_running.AddScan(t, p, scan);
+    if (shared.AddScan(t, p, scan).solved) solved_at.push_back(t);
+    t += 1.0;
+  }
+  // t = 0 solves (1 s), so the next waits 3 s of wall clock: due at t = 4 and 5 but deferred, solved at 6;
+  // due again at 10, deferred.
+  EXPECT_EQ(solved_at, (std::vector<double>{0.0, 6.0}));
+  EXPECT_EQ(shared.counters().solves_deferred, 3);
+  EXPECT_EQ(shared.counters().last_solve_wall_s, 1.0);
+  EXPECT_EQ(free_running.counters().solves, 3);
+  // The filter never saw the solves: the final solve gives the same map either way.
+  ASSERT_TRUE(free_running.Solve().solved && shared.Solve().solved);
+  EXPECT_EQ(free_running.Map()->cells, shared.Map()->cells);
+  EXPECT_EQ(free_running.Trajectory().back().x_m, shared.Trajectory().back().x_m);
+}
+
 TEST(MappingSession, BadOptionsThrowNamingTheField) {
   MappingSessionOptions o;
   o.throttle_scans = 0;
@@ -340,6 +368,9 @@ TEST(MappingSession, BadOptionsThrowNamingTheField) {
   }
   o = MappingSessionOptions{};
   o.map_update_interval_s = -1.0;
+  EXPECT_THROW(MappingSession{o}, std::invalid_argument);
+  o = MappingSessionOptions{};
+  o.map_update_max_solve_share = 1.0;
   EXPECT_THROW(MappingSession{o}, std::invalid_argument);
   o = MappingSessionOptions{};
   o.slam.plate_sigma_m = 0.0;

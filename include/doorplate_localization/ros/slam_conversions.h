@@ -95,6 +95,9 @@ struct MapperHealth {
   // behind), sightings that came after a newer scan had gone to the filter.
   int scans_waiting_for_camera = -1;
   long long camera_waits_expired = 0, plates_late = 0;
+  long long solves = 0;            // back-end solves (MappingSession counters)
+  double last_solve_s = 0.0;       // wall-clock seconds of the last one
+  long long solves_deferred = 0;   // processed scans at which a due solve waited for the solve share
   std::string map;                 // the last published map, "W x H at R m"; "" none yet
   std::string error;               // the last unexpected exception of a callback ("" none)
 };
@@ -106,7 +109,7 @@ std::string MapperStateText(const MapperHealth& health);
 // state, plus "; last scan dropped: <why>" while scans are dropped; values: state, scan rate, last scan
 // age, scans processed, scans dropped, last drop, particles, neff, landmarks, plates used / ignored, the
 // stamp order's scans waiting for the camera ("off" when they do not wait), waits run out and late plates,
-// map, last error.
+// solves, the last solve's seconds, solves deferred, map, last error.
 diagnostic_msgs::DiagnosticStatus ToMapperDiagnosticStatus(const MapperHealth& health, const std::string& name,
                                                            const std::string& hardware_id);
 

@@ -48,7 +48,12 @@
 //    (PlateOutcome::kNoRange).
 //  - The back end is solved by Solve() only: explicitly, or after a processed scan when
 //    map_update_interval_s > 0 and that long passed (scan stamps) since the last solve. Solve() also
-//    rebuilds Map() and GetTextMap() and recomputes MapToOdom().
+//    rebuilds Map() and GetTextMap() and recomputes MapToOdom(). A solve's cost grows with the trajectory
+//    (an hour of driving: thousands of nodes), so live, with map_update_max_solve_share > 0, a periodic
+//    solve also waits until the wall clock says the solves so far took at most that share of the time: after
+//    a solve of d wall seconds the next periodic one waits d·(1/share − 1) wall seconds (counted in
+//    solves_deferred per processed scan that found it due but waiting). Solves change only the outputs
+//    (Map, GetTextMap, MapToOdom), never the filter, so the final Solve() is the same either way.
 //  - map -> odom = estimate ∘ (odometry)⁻¹ at the last processed scan (TextSlam::EstimatedPose: the last
 //    solve's newest node ⊕ odometry since, else the best particle), recomputed after every processed
 //    scan, used plate and Solve().
@@ -58,6 +63,7 @@
 
 #include <cstddef>
 #include <deque>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -85,6 +91,9 @@ struct MappingSessionOptions {
                                              // (an OCR report arrives seconds after its image on a busy machine)
   double camera_wait_s = 0.0;                // > 0: scans wait for the camera's reports up to their stamp, at
                                              // most this long (scan stamps), [0, 60]; 0: no waiting (see above)
+  double map_update_max_solve_share = 0.0;   // in [0, 1): periodic solves take at most this share of the wall
+                                             // clock (see above); 0: off (deterministic timing of the outputs,
+                                             // the offline tools' setting)
 };
 
 // Throws std::invalid_argument naming the field ("MappingSessionOptions.throttle_scans ...", or
@@ -122,6 +131,9 @@ struct MappingSessionCounters {
   long long plates_used = 0;        // TextSlamPlateResult::used
   long long plate_ranges_from_wall = 0;  // ranges taken from the wall line (something stood before the plate)
   long long solves = 0;
+  long long solves_deferred = 0;    // processed scans at which a periodic solve was due but the wall-clock share
+                                    // (map_update_max_solve_share) made it wait
+  double last_solve_wall_s = 0.0;   // wall-clock duration of the last Solve()
 };
 
 class MappingSession {
@@ -171,6 +183,9 @@ class MappingSession {
   // Scans taken but waiting for the camera (camera_wait_s > 0).
   std::size_t waiting_scans() const { return waiting_.size(); }
   const MappingSessionOptions& options() const { return options_; }
+  // The wall clock the solve share is measured with (seconds, monotonic; default std::chrono::steady_clock);
+  // tests pass a fake one.
+  void SetWallClock(std::function<double()> clock) { wall_clock_ = std::move(clock); }
 
  private:
   struct TimedScan {
@@ -217,6 +232,8 @@ class MappingSession {
   std::optional<double> last_sent_stamp_s_;  // the newest scan given to the filter
   std::optional<double> last_scan_stamp_s_;
   std::optional<double> last_processed_stamp_s_, last_solve_stamp_s_;  // scan stamps
+  std::function<double()> wall_clock_;
+  std::optional<double> next_periodic_solve_wall_s_;  // map_update_max_solve_share > 0: not before this
   int scan_calls_ = 0;
   int ordered_index_ = 0;                  // camera_wait_s > 0: scans given to the filter so far
   std::vector<int> processed_scan_indices_;
