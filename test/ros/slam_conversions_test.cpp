@@ -257,14 +257,13 @@ TEST(ToMapperDiagnosticStatus, SaysMappingOnlyWhileScansAreTakenAndNamesDropsAnd
   h.scans_waiting_for_camera = 3;
   h.camera_waits_expired = 2;
   h.plates_late = 1;
+  h.solves = 7;
+  h.last_solve_s = 1.234;
+  h.solves_deferred = 5;
   d = ToMapperDiagnosticStatus(h, "/slam_mapping: mapping", "/slam_mapping");
   EXPECT_EQ(value("scans waiting for the camera"), "3");
   EXPECT_EQ(value("camera waits run out"), "2");
   EXPECT_EQ(value("plates later than the camera wait"), "1");
-  h.solves = 7;
-  h.last_solve_s = 1.234;
-  h.solves_deferred = 5;
-  d = ToMapperDiagnosticStatus(h, "n", "n");
   EXPECT_EQ(value("back-end solves"), "7");
   EXPECT_EQ(value("last solve (s)"), "1.23");
   EXPECT_EQ(value("solves deferred (solve share)"), "5");

@@ -16,8 +16,6 @@ class DiffDriveMotionModel : public MotionModel {
   void Predict(const Pose2D& odom_before, const Pose2D& odom_after, std::vector<Particle>* particles,
                std::mt19937_64& rng) const override;
 
-  const OdometryMotionModel& model() const { return model_; }
-
  private:
   const OdometryMotionModel model_;
 };

@@ -107,8 +107,6 @@ class OdometryMotionModel {
   static Pose2D SampleIsotropic(const Pose2D& from, const Pose2D& delta, const StepSpread& spread,
                                 std::mt19937_64& rng);
 
-  const OdometryMotionModelOptions& options() const { return options_; }
-
  private:
   const OdometryMotionModelOptions options_;
 };
