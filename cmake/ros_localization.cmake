@@ -44,8 +44,13 @@ if(CATKIN_ENABLE_TESTING)
   add_dependencies(text_amcl_reconfigure_rostest doorplate_localization_nodelet)
 
   # Sim + wall follower + text extractor + Text AMCL in one manager: global localization in a symmetric
-  # corridor converges to the true pose. The checker also tests LoadTextAmclOptions (needs a parameter server).
+  # corridor converges to the true pose. The same .test runs the LoadTextAmclOptions checker (it needs a
+  # parameter server and the shipped config under /amcl).
+  catkin_add_executable_with_gtest(text_amcl_options_rostest test/ros/text_amcl_options_rostest.cpp)
+  target_include_directories(text_amcl_options_rostest PRIVATE src/ros ${catkin_INCLUDE_DIRS})
+  target_link_libraries(text_amcl_options_rostest doorplate_localization_nodelet ${catkin_LIBRARIES})
   add_rostest_gtest(text_amcl_nodelet_rostest test/ros/text_amcl_nodelet.test test/ros/text_amcl_nodelet_rostest.cpp)
   target_include_directories(text_amcl_nodelet_rostest PRIVATE src/ros ${catkin_INCLUDE_DIRS})
   target_link_libraries(text_amcl_nodelet_rostest doorplate_localization_nodelet ${catkin_LIBRARIES})
+  add_dependencies(text_amcl_nodelet_rostest text_amcl_options_rostest)
 endif()

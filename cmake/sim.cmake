@@ -42,4 +42,7 @@ if(CATKIN_ENABLE_TESTING)
                ground_truth_maps photo_world people clutter_presets world_detail_surfaces world_detail_fields)
     doorplate_add_core_test(${name}_test test/sim/${name}_test.cpp doorplate_sim)
   endforeach()
+  # The renderer's private image helpers (src/sim/image_noise.h).
+  doorplate_add_core_test(image_noise_test test/sim/image_noise_test.cpp doorplate_sim)
+  target_include_directories(image_noise_test PRIVATE src/sim)
 endif()

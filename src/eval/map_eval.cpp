@@ -185,6 +185,7 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
   }
   if (const std::optional<SlamBackEndResult>& back_end = session.BackEndResult()) {
     result.odometry_scale = back_end->odometry_scale;
+    result.odometry_heading_drift_rad_per_m = back_end->odometry_heading_drift_rad_per_m;
     result.loop_closures = back_end->loop_closures;
     result.loop_closures_dropped = back_end->loop_closures_dropped;
   }

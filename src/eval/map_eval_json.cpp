@@ -63,6 +63,7 @@ Json MapEvalJson(const MapEvalResult& r, const MapEvalRunInfo& info) {
   j["trajectory_rmse_m"] = r.trajectory_rmse_m;
   j["trajectory_max_error_m"] = r.trajectory_max_error_m;
   j["back_end_odometry_scale"] = r.odometry_scale;
+  j["back_end_odometry_heading_drift_rad_per_m"] = r.odometry_heading_drift_rad_per_m;
   j["back_end_loop_closures"] = r.loop_closures;
   j["back_end_loop_closures_dropped"] = r.loop_closures_dropped;
   j["seconds"] = r.seconds;

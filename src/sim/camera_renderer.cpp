@@ -4,10 +4,7 @@
 // exact for this scene). The camera's pitch is a pure rotation, i.e. the homography K·R·K⁻¹, applied by
 // one remap from a taller unpitched image. Signs are sampled from mip-mapped textures drawn once with
 // OpenCV's anti-aliased Hershey fonts, so digits stay crisp at any distance.
-// Sign textures live in sign_texture.cpp, the noise and blur helpers in image_noise.cpp.
-// Over 400 lines because the column caster, the hit painter (walls, doors, signs, glass blended over what is
-// behind it) and the pitch remap share the per-column hit lists and the renderer's cached state; the
-// self-contained pieces are already in those two files.
+// Sign textures live in sign_texture.cpp; blur, gain and pixel noise in image_noise.cpp.
 #include "doorplate_localization/sim/camera_renderer.h"
 
 #include "image_noise.h"
@@ -367,31 +364,7 @@ void CameraRenderer::Degrade(double center_depth_m, double speed_mps, double yaw
   if (options_.lighting_gain_stddev > 0.0) {
     gain = std::max(0.2, std::normal_distribution<double>(1.0, options_.lighting_gain_stddev)(rng));
   }
-  // Fixed point: out = (in · G + noise · 256 + 2048) >> 12 with G = gain · 4096, noise in 1/16 levels.
-  const int width = image->cols, row_values = 3 * width;
-  std::vector<std::int32_t> channel_gain(row_values);
-  for (int u = 0; u < width; ++u) {
-    const double g = gain * (1.0 + options_.lighting_gradient * ((u + 0.5) / width - 0.5));
-    channel_gain[3 * u] = channel_gain[3 * u + 1] = channel_gain[3 * u + 2] =
-        static_cast<std::int32_t>(std::lround(std::clamp(g, 0.0, 8.0) * 4096.0));
-  }
-  SplitMix64 fast_rng{rng()};  // one draw from `rng` seeds the per-pixel generator
-  std::vector<std::uint64_t> words((row_values + 3) / 4);
-  const auto* index = reinterpret_cast<const std::uint16_t*>(words.data());
-  for (int r = 0; r < image->rows; ++r) {
-    uchar* p = image->ptr<uchar>(r);
-    if (noise_table_.empty()) {
-      for (int i = 0; i < row_values; ++i) {
-        p[i] = cv::saturate_cast<uchar>((p[i] * channel_gain[i] + 2048) >> 12);
-      }
-      continue;
-    }
-    for (std::uint64_t& w : words) w = fast_rng();
-    for (int i = 0; i < row_values; ++i) {
-      const int noise = noise_table_[index[i] & (kNoiseTableSize - 1)];
-      p[i] = cv::saturate_cast<uchar>((p[i] * channel_gain[i] + noise * 256 + 2048) >> 12);
-    }
-  }
+  ApplyGainAndNoise(gain, options_.lighting_gradient, noise_table_, rng(), image);  // one draw from `rng`
 }
 
 bool CameraRenderer::Project(const Pose2D& robot_pose, const Point3& world_point, cv::Point2d* pixel) const {

@@ -46,4 +46,33 @@ cv::Mat BlurKernel(double sigma_px, double box_px) {
   return kernel / cv::sum(kernel)[0];
 }
 
+void ApplyGainAndNoise(double gain, double gradient, const std::vector<std::int16_t>& noise_table,
+                       std::uint64_t seed, cv::Mat* image) {
+  const int width = image->cols, row_values = 3 * width;
+  std::vector<std::int32_t> channel_gain(row_values);
+  for (int u = 0; u < width; ++u) {
+    const double g = gain * (1.0 + gradient * ((u + 0.5) / width - 0.5));
+    channel_gain[3 * u] = channel_gain[3 * u + 1] = channel_gain[3 * u + 2] =
+        static_cast<std::int32_t>(std::lround(std::clamp(g, 0.0, 8.0) * 4096.0));
+  }
+  SplitMix64 fast_rng{seed};
+  const std::size_t table_mask = noise_table.empty() ? 0 : noise_table.size() - 1;
+  std::vector<std::uint64_t> words((row_values + 3) / 4);
+  const auto* index = reinterpret_cast<const std::uint16_t*>(words.data());
+  for (int r = 0; r < image->rows; ++r) {
+    uchar* p = image->ptr<uchar>(r);
+    if (noise_table.empty()) {
+      for (int i = 0; i < row_values; ++i) {
+        p[i] = cv::saturate_cast<uchar>((p[i] * channel_gain[i] + 2048) >> 12);
+      }
+      continue;
+    }
+    for (std::uint64_t& w : words) w = fast_rng();
+    for (int i = 0; i < row_values; ++i) {
+      const int noise = noise_table[index[i] & table_mask];
+      p[i] = cv::saturate_cast<uchar>((p[i] * channel_gain[i] + noise * 256 + 2048) >> 12);
+    }
+  }
+}
+
 }  // namespace doorplate_localization

@@ -27,4 +27,12 @@ struct SplitMix64 {
 // exposure), normalised to sum 1.
 cv::Mat BlurKernel(double sigma_px, double box_px);
 
+// Scales a CV_8UC3 image by `gain`, tilted across it (column u of width w gets
+// gain · (1 + gradient · ((u + 0.5) / w − 0.5)), clamped to [0, 8]), and adds noise drawn from
+// `noise_table` (GaussianQuantiles, 1/16 grey levels; empty: no noise) with a SplitMix64 seeded by `seed`.
+// Fixed point: out = (in · G + noise · 256 + 2048) >> 12 with G = gain · 4096. `noise_table.size()` must be
+// a power of two ≤ 65536.
+void ApplyGainAndNoise(double gain, double gradient, const std::vector<std::int16_t>& noise_table,
+                       std::uint64_t seed, cv::Mat* image);
+
 }  // namespace doorplate_localization

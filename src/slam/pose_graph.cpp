@@ -37,16 +37,18 @@ struct PoseResidual {
   Eigen::Matrix3d d_from;   // ∂e/∂(x, y, θ) of the from node
   Eigen::Matrix3d d_to;     // ∂e/∂(x, y, θ) of the to node
   Eigen::Vector3d d_scale;  // ∂e/∂scale (zero unless odometry)
+  Eigen::Vector3d d_drift;  // ∂e/∂heading drift (zero unless odometry)
 };
 
-PoseResidual Evaluate(const PoseEdge& edge, const Pose2D& a, const Pose2D& b, double scale) {
+PoseResidual Evaluate(const PoseEdge& edge, const Pose2D& a, const Pose2D& b, double scale, double drift) {
   const double s = edge.odometry ? scale : 1.0;
+  const double distance = edge.odometry ? std::hypot(edge.measurement.x_m, edge.measurement.y_m) : 0.0;
   const Eigen::Vector2d d(b.x_m - a.x_m, b.y_m - a.y_m);
   const Eigen::Vector2d t(edge.measurement.x_m, edge.measurement.y_m);
   const Eigen::Matrix2d rt = RotationTransposed(a.theta_rad);
   PoseResidual r;
   r.e.head<2>() = rt * d - s * t;
-  r.e(2) = NormalizeAngle(b.theta_rad - a.theta_rad - edge.measurement.theta_rad);
+  r.e(2) = NormalizeAngle(b.theta_rad - a.theta_rad - edge.measurement.theta_rad - drift * distance);
   r.d_from.setZero();
   r.d_from.topLeftCorner<2, 2>() = -rt;
   r.d_from.block<2, 1>(0, 2) = RotationTransposedDerivative(a.theta_rad) * d;
@@ -56,6 +58,8 @@ PoseResidual Evaluate(const PoseEdge& edge, const Pose2D& a, const Pose2D& b, do
   r.d_to(2, 2) = 1.0;
   r.d_scale.setZero();
   if (edge.odometry) r.d_scale.head<2>() = -t;
+  r.d_drift.setZero();
+  r.d_drift(2) = -distance;
   return r;
 }
 
@@ -97,7 +101,7 @@ void PoseGraph::AddEdge(const LandmarkEdge& edge) {
 }
 
 double PoseGraph::SquaredResidual(const PoseEdge& edge) const {
-  const PoseResidual r = Evaluate(edge, nodes_.at(edge.from), nodes_.at(edge.to), scale_);
+  const PoseResidual r = Evaluate(edge, nodes_.at(edge.from), nodes_.at(edge.to), scale_, drift_);
   return r.e.dot(edge.information * r.e);
 }
 
@@ -116,6 +120,9 @@ double PoseGraph::Cost(const PoseGraphOptions& options) const {
   if (options.estimate_odometry_scale) {
     cost += 0.5 * std::pow((scale_ - 1.0) / options.scale_prior_sigma, 2);
   }
+  if (options.estimate_odometry_heading_drift) {
+    cost += 0.5 * std::pow(drift_ / options.heading_drift_prior_sigma_rad_per_m, 2);
+  }
   return cost;
 }
 
@@ -124,8 +131,10 @@ PoseGraphSummary PoseGraph::Optimize(const PoseGraphOptions& options) {
   summary.initial_cost = summary.final_cost = Cost(options);
   if (nodes_.empty()) return summary;
   const int n_pose = 3 * num_nodes();
-  const int scale_index = n_pose + 2 * num_landmarks();
-  const int n = scale_index + 1;
+  // The drift is a variable of the system only when it is estimated (otherwise 0 and left out).
+  const bool with_drift = options.estimate_odometry_heading_drift;
+  const int scale_index = n_pose + 2 * num_landmarks(), drift_index = scale_index + 1;
+  const int n = with_drift ? drift_index + 1 : scale_index + 1;
   for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
     std::vector<Eigen::Triplet<double>> triplets;
     Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
@@ -137,18 +146,18 @@ PoseGraphSummary PoseGraph::Optimize(const PoseGraphOptions& options) {
       }
     };
     for (const PoseEdge& edge : pose_edges_) {
-      const PoseResidual r = Evaluate(edge, nodes_[edge.from], nodes_[edge.to], scale_);
+      const PoseResidual r = Evaluate(edge, nodes_[edge.from], nodes_[edge.to], scale_, drift_);
       double w = 1.0;
       if (edge.robust) w = HuberWeight(std::sqrt(std::max(0.0, r.e.dot(edge.information * r.e))), options.huber_sigmas);
       const Eigen::Matrix3d omega = w * edge.information;
-      Eigen::Matrix<double, 3, 7> j;
-      j << r.d_from, r.d_to, r.d_scale;
-      const Eigen::Matrix<double, 7, 7> h = j.transpose() * omega * j;
-      const Eigen::Matrix<double, 7, 1> g = j.transpose() * omega * r.e;
-      const int index[3] = {3 * edge.from, 3 * edge.to, scale_index};
-      const int size[3] = {3, 3, 1};
-      const int offset[3] = {0, 3, 6};
-      const int blocks = edge.odometry ? 3 : 2;
+      Eigen::Matrix<double, 3, 8> j;
+      j << r.d_from, r.d_to, r.d_scale, r.d_drift;
+      const Eigen::Matrix<double, 8, 8> h = j.transpose() * omega * j;
+      const Eigen::Matrix<double, 8, 1> g = j.transpose() * omega * r.e;
+      const int index[4] = {3 * edge.from, 3 * edge.to, scale_index, drift_index};
+      const int size[4] = {3, 3, 1, 1};
+      const int offset[4] = {0, 3, 6, 7};
+      const int blocks = edge.odometry ? (with_drift ? 4 : 3) : 2;
       for (int p = 0; p < blocks; ++p) {
         b.segment(index[p], size[p]) += g.segment(offset[p], size[p]);
         for (int q = 0; q < blocks; ++q) add_block(index[p], index[q], h.block(offset[p], offset[q], size[p], size[q]));
@@ -181,6 +190,11 @@ PoseGraphSummary PoseGraph::Optimize(const PoseGraphOptions& options) {
     } else {
       triplets.emplace_back(scale_index, scale_index, kFixedNodeInformation);
     }
+    if (with_drift) {
+      const double inv = 1.0 / (options.heading_drift_prior_sigma_rad_per_m * options.heading_drift_prior_sigma_rad_per_m);
+      triplets.emplace_back(drift_index, drift_index, inv);
+      b(drift_index) += inv * drift_;
+    }
     // A touch of damping keeps landmarks seen once and weakly tied nodes well posed.
     for (int k = 0; k < n; ++k) triplets.emplace_back(k, k, 1e-9);
     Eigen::SparseMatrix<double> h(n, n);
@@ -198,7 +212,7 @@ PoseGraphSummary PoseGraph::Optimize(const PoseGraphOptions& options) {
     // Apply with step halving while the cost rises (Gauss-Newton can overshoot with robust edges).
     const std::vector<Pose2D> nodes_before = nodes_;
     const std::vector<Vec2> landmarks_before = landmarks_;
-    const double scale_before = scale_;
+    const double scale_before = scale_, drift_before = drift_;
     const double cost_before = summary.final_cost;
     double step = 1.0, cost = cost_before;
     for (int halving = 0; halving < 8; ++halving, step *= 0.5) {
@@ -211,6 +225,7 @@ PoseGraphSummary PoseGraph::Optimize(const PoseGraphOptions& options) {
                          landmarks_before[i].y + step * delta(n_pose + 2 * i + 1)};
       }
       scale_ = options.estimate_odometry_scale ? scale_before + step * delta(scale_index) : 1.0;
+      drift_ = with_drift ? drift_before + step * delta(drift_index) : 0.0;
       cost = Cost(options);
       if (cost <= cost_before) break;
     }
@@ -219,6 +234,7 @@ PoseGraphSummary PoseGraph::Optimize(const PoseGraphOptions& options) {
       nodes_ = nodes_before;
       landmarks_ = landmarks_before;
       scale_ = scale_before;
+      drift_ = drift_before;
       break;
     }
     summary.final_cost = cost;

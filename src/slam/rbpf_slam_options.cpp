@@ -124,6 +124,10 @@ const TextField kTextFields[] = {
      [](T& o) { return &o.back_end.icp.skip_points_nearest_no_line; }},
     {"back_end.graph.scale_prior_sigma", [](T& o) { return &o.back_end.graph.scale_prior_sigma; }},
     {"back_end.graph.estimate_odometry_scale", nullptr, nullptr, [](T& o) { return &o.back_end.graph.estimate_odometry_scale; }},
+    {"back_end.graph.heading_drift_prior_sigma_rad_per_m",
+     [](T& o) { return &o.back_end.graph.heading_drift_prior_sigma_rad_per_m; }},
+    {"back_end.graph.estimate_odometry_heading_drift", nullptr, nullptr,
+     [](T& o) { return &o.back_end.graph.estimate_odometry_heading_drift; }},
 };
 
 const TextField* FindText(const std::string& name) {

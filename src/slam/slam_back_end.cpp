@@ -40,6 +40,7 @@ const SlamBackEndOptions& Validated(const SlamBackEndOptions& o) {
     fail("icp.degenerate_min_fraction: must be in [0, 1)");
   }
   if (!(o.graph.scale_prior_sigma > 0)) fail("graph.scale_prior_sigma: must be > 0");
+  if (!(o.graph.heading_drift_prior_sigma_rad_per_m > 0)) fail("graph.heading_drift_prior_sigma_rad_per_m: must be > 0");
   return o;
 }
 
@@ -102,8 +103,11 @@ std::pair<double, double> SlamBackEnd::OdometryVariances(const Pose2D& step) con
 bool SlamBackEnd::AgreesWithOdometry(const Pose2D& odometry, const Pose2D& aligned) const {
   if (!(options_.sequential_gate_sigmas > 0)) return true;
   const double d = std::hypot(odometry.x_m, odometry.y_m);
-  const auto [step_var_t, var_r] = OdometryVariances(odometry);
+  const auto [step_var_t, step_var_r] = OdometryVariances(odometry);
   const double var_t = step_var_t + options_.graph.scale_prior_sigma * options_.graph.scale_prior_sigma * d * d;
+  const double drift_sigma =
+      options_.graph.estimate_odometry_heading_drift ? options_.graph.heading_drift_prior_sigma_rad_per_m : 0.0;
+  const double var_r = step_var_r + drift_sigma * drift_sigma * d * d;
   const double dx = aligned.x_m - odometry.x_m, dy = aligned.y_m - odometry.y_m;
   const double dtheta = NormalizeAngle(aligned.theta_rad - odometry.theta_rad);
   const double gate = options_.sequential_gate_sigmas * options_.sequential_gate_sigmas;
@@ -313,6 +317,7 @@ SlamBackEndResult SlamBackEnd::Optimize() const {
     result.plates[plate_id] = graph.landmark(landmark);
   }
   result.odometry_scale = graph.odometry_scale();
+  result.odometry_heading_drift_rad_per_m = graph.odometry_heading_drift_rad_per_m();
   return result;
 }
 

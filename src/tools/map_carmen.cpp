@@ -184,6 +184,13 @@ int Run(const Args& args) {
                args.laser_only ? "rbpf" : "slam", s.scans_seen, s.scans_processed, s.resamplings, s.matches,
                s.weak_matches, s.rejected_jumps, log.no_return_range_m, filter.MapMemoryBytes() / 1e6, clock.Seconds(),
                tools::PeakRssMb());
+  if (session.BackEndResult()) {
+    const dl::SlamBackEndResult& r = *session.BackEndResult();
+    std::fprintf(stderr, "doorplate_map_log: back end: %d nodes, %d alignments, %d loop closures (%d dropped as "
+                 "inconsistent), odometry scale %.4f, heading drift %.5f rad/m\n", static_cast<int>(r.poses.size()),
+                 r.alignment_edges, r.loop_closures, r.loop_closures_dropped, r.odometry_scale,
+                 r.odometry_heading_drift_rad_per_m);
+  }
   return 0;
 }
 

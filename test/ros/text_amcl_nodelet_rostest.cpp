@@ -1,18 +1,15 @@
 // Checker node of text_amcl_nodelet.test: the simulator, the wall follower (started disabled), the text
-// extractor and Text AMCL run in one nodelet manager on the paper's closed-door corridor. Checks
-// LoadTextAmclOptions against this node's parameters, amcl's interface (services, latched topics, the text
-// landmark markers), that bad input is reported naming the topic while the node keeps running, global
-// localization (after global_localization and a drive along the corridor, ~state says converged and
+// extractor and Text AMCL run in one nodelet manager on the paper's closed-door corridor. Checks amcl's
+// interface (services, latched topics, the text landmark markers), that bad input is reported naming the
+// topic while the node keeps running, global localization (after global_localization and a drive along the corridor, ~state says converged and
 // amcl_pose and tf map -> base_link agree with base_pose_ground_truth), then ~save_pose_rate and set_map
 // (a refused map changes nothing: amcl_pose flows on, ~state and the latched map stay), ~state and
 // /diagnostics, and a second localizer (/late, no map yet) that queues global_localization until its map.
 // Every wait is on a condition with a wall-clock timeout. The cases run in order: the drive starts in the
-// global localization case. Over 400 lines because the cases share one running graph (one ROS master and a
-// converged filter are expensive to start): splitting them into several .test files would restart all of it.
+// global localization case. The same .test runs text_amcl_options_rostest (the parameter loader).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <deque>
 #include <functional>
 #include <limits>
 #include <set>
@@ -27,7 +24,6 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
-#include <rosgraph_msgs/Log.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_msgs/String.h>
 #include <std_srvs/Empty.h>
@@ -38,119 +34,19 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include "doorplate_localization/TextDetectionArray.h"
-#include "text_amcl_options.h"
 #include "rostest_util.h"
+#include "text_amcl_listener.h"
 
 namespace doorplate_localization {
 namespace {
 
-using rostest_util::TruthNear;
 using rostest_util::WaitFor;
 
 double DegreesBetween(double a_rad, double b_rad) {
   return std::fabs(std::remainder(a_rad - b_rad, 2.0 * M_PI)) * 180.0 / M_PI;
 }
 
-// Everything the nodelet publishes, and the simulator's ground truth, as the checker sees it.
-struct Listener {
-  ros::NodeHandle nh;
-  std::string state;
-  std::set<std::string> states_seen;
-  geometry_msgs::PoseWithCovarianceStamped::ConstPtr pose;
-  geometry_msgs::PoseArray::ConstPtr cloud;
-  int clouds = 0;
-  int poses = 0;
-  visualization_msgs::MarkerArray::ConstPtr markers;
-  std::deque<nav_msgs::Odometry::ConstPtr> truth;  // the last ~40 s
-  // WARN and above from /rosout, all of them.
-  rostest_util::RosoutLog warnings{rosgraph_msgs::Log::WARN, std::numeric_limits<std::size_t>::max()};
-  ros::Subscriber subs[5];
-
-  Listener() {
-    subs[0] = nh.subscribe<std_msgs::String>("amcl/state", 10, [this](const std_msgs::String::ConstPtr& m) {
-      state = m->data;
-      states_seen.insert(m->data);
-    });
-    subs[1] = nh.subscribe<geometry_msgs::PoseWithCovarianceStamped>(
-        "amcl_pose", 10, [this](const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& m) {
-          pose = m;
-          ++poses;
-        });
-    subs[2] = nh.subscribe<geometry_msgs::PoseArray>("particlecloud", 2, [this](const geometry_msgs::PoseArray::ConstPtr& m) {
-      cloud = m;
-      ++clouds;
-    });
-    subs[3] = nh.subscribe<visualization_msgs::MarkerArray>(
-        "text_landmarks", 1, [this](const visualization_msgs::MarkerArray::ConstPtr& m) { markers = m; });
-    subs[4] = nh.subscribe<nav_msgs::Odometry>("base_pose_ground_truth", 100, [this](const nav_msgs::Odometry::ConstPtr& m) {
-      truth.push_back(m);
-      if (truth.size() > 2000) truth.pop_front();
-    });
-  }
-
-  bool Warned(const std::string& a, const std::string& b) const { return warnings.Has(a, b); }
-
-  nav_msgs::Odometry::ConstPtr TruthAt(const ros::Time& stamp) const { return TruthNear(truth, stamp); }
-};
-
 Listener* listener = nullptr;
-
-// LoadTextAmclOptions, on parameters set under this node's private namespace.
-TEST(LoadTextAmclOptions, WithoutParametersGivesAmclsDefaultsExceptRecovery) {
-  const TextAmclNodeOptions o = LoadTextAmclOptions(ros::NodeHandle("~empty"));
-  EXPECT_EQ(o.session.setup.filter.min_particles, 100);
-  EXPECT_EQ(o.session.setup.filter.max_particles, 5000);
-  EXPECT_DOUBLE_EQ(o.session.setup.filter.kld_err, 0.01);
-  EXPECT_DOUBLE_EQ(o.session.setup.filter.update_min_a_rad, M_PI / 6.0);
-  EXPECT_EQ(o.session.setup.likelihood_field.beams.laser_max_beams, 30);  // amcl's (the core's: 60)
-  EXPECT_EQ(o.session.setup.beam.beams.laser_max_beams, 30);
-  EXPECT_EQ(o.session.setup.laser_model_type, LaserModelType::kLikelihoodField);
-  EXPECT_EQ(o.session.setup.motion.noise_law, OdometryNoiseLaw::kDiff);
-  EXPECT_DOUBLE_EQ(o.session.setup.filter.recovery_alpha_slow, 0.001);  // amcl: 0 (documented)
-  EXPECT_DOUBLE_EQ(o.transform_tolerance_s, 0.1);
-  EXPECT_DOUBLE_EQ(o.session.initial_covariance(0, 0), 0.25);
-  EXPECT_DOUBLE_EQ(o.session.initial_covariance(2, 2), (M_PI / 12.0) * (M_PI / 12.0));
-  EXPECT_EQ(o.global_frame_id, "map");
-  EXPECT_FALSE(o.use_map_topic);
-  EXPECT_TRUE(o.map_file.empty());
-}
-
-void ExpectErrorNaming(const ros::NodeHandle& nh, const std::string& parameter) {
-  rostest_util::ExpectLoadErrorNaming<ParameterError>(LoadTextAmclOptions, nh, parameter);
-}
-
-TEST(LoadTextAmclOptions, RejectsOutOfRangeMistypedAndUnsupportedValuesNamingTheParameter) {
-  ros::NodeHandle nh("~bad");
-  const std::pair<std::string, XmlRpc::XmlRpcValue> cases[] = {
-      {"kld_err", XmlRpc::XmlRpcValue(0.0)},
-      {"min_particles", XmlRpc::XmlRpcValue("many")},
-      {"odom_model_type", XmlRpc::XmlRpcValue("omni")},
-      {"laser_model_type", XmlRpc::XmlRpcValue("sonar")},
-      {"laser_z_hit", XmlRpc::XmlRpcValue(1.5)},
-      {"base_frame_id", XmlRpc::XmlRpcValue("/base_link")},
-      {"selective_resampling", XmlRpc::XmlRpcValue(true)},
-      {"recovery_alpha_fast", XmlRpc::XmlRpcValue(0.0001)},  // < recovery_alpha_slow (0.001)
-      {"text_max_view_angle_rad", XmlRpc::XmlRpcValue(2.0)},
-      {"max_particles", XmlRpc::XmlRpcValue(1000000000)},  // above limits::kMaxParticles (was std::bad_alloc)
-      {"scan_timeout_s", XmlRpc::XmlRpcValue("soon")},
-  };
-  for (const auto& c : cases) {
-    nh.setParam(c.first, c.second);
-    ExpectErrorNaming(nh, c.first);
-    nh.deleteParam(c.first);
-  }
-  nh.setParam("max_particles", 50);  // < min_particles
-  ExpectErrorNaming(nh, "max_particles");
-}
-
-TEST(LoadTextAmclOptions, TheShippedConfigLoads) {
-  const TextAmclNodeOptions o = LoadTextAmclOptions(ros::NodeHandle("/amcl"));
-  EXPECT_EQ(o.session.setup.likelihood_field.beams.laser_max_beams, 60);
-  EXPECT_EQ(o.session.setup.motion.noise_law, OdometryNoiseLaw::kDiffCorrected);
-  EXPECT_TRUE(o.session.setup.use_text);
-  EXPECT_NE(o.map_file.find("paper_sim_closed_doors.yaml"), std::string::npos);
-  EXPECT_NE(o.text_map_file.find("paper_sim_closed_doors.text_map.yaml"), std::string::npos);
-}
 
 // The nodelet, in the manager.
 TEST(TextAmclNodelet, OffersAmclsServicesAndLatchedTopicsAndTheTextLandmarks) {

@@ -12,6 +12,10 @@
 // edge predicts the translation `scale × measured`, and `scale` is one more unknown. Where the laser fixes
 // motion along the corridor (an end wall in range) the alignment edges pin the true steps, so the scale
 // is calibrated there and corrects the steps where nothing but odometry says how far the robot went.
+// Odometry heading drift (the same paper's calibration, Borenstein's "unequal wheel diameters" error): wheels
+// of slightly different radii turn the measured heading by a systematic `drift × distance` (rad per metre
+// of measured translation). An odometry edge predicts the heading change `measured + drift × |measured
+// translation|`, and `drift` is one more unknown, calibrated where the scans fix the heading.
 #pragma once
 
 #include <vector>
@@ -28,6 +32,8 @@ struct PoseGraphOptions {
   double huber_sigmas = 3.0;        // robust edges: Huber kernel beyond this Mahalanobis distance
   double scale_prior_sigma = 0.05;  // odometry scale ~ N(1, σ²) when it is estimated
   bool estimate_odometry_scale = true;
+  double heading_drift_prior_sigma_rad_per_m = 0.01;  // heading drift ~ N(0, σ²) when it is estimated
+  bool estimate_odometry_heading_drift = false;  // tried on the real logs: no gain (docs/slam.md)
 };
 
 // A measured pose of node `to` in the frame of node `from`.
@@ -36,7 +42,7 @@ struct PoseEdge {
   int to = 0;
   Pose2D measurement;
   Eigen::Matrix3d information = Eigen::Matrix3d::Identity();
-  bool odometry = false;  // the translation is scaled by the odometry scale factor
+  bool odometry = false;  // the translation is scaled by the odometry scale, the heading drift is added
   bool robust = false;    // Huber kernel (loop closures, which may be wrong)
 };
 
@@ -75,6 +81,9 @@ class PoseGraph {
   const Vec2& landmark(int i) const { return landmarks_.at(i); }
   // Estimated odometry distance ÷ true distance is 1 / scale; 1 when not estimated.
   double odometry_scale() const { return scale_; }
+  // Estimated true heading change − measured heading change, per metre of measured translation (rad/m); 0
+  // when not estimated.
+  double odometry_heading_drift_rad_per_m() const { return drift_; }
 
  private:
   double Cost(const PoseGraphOptions& options) const;
@@ -84,6 +93,7 @@ class PoseGraph {
   std::vector<PoseEdge> pose_edges_;
   std::vector<LandmarkEdge> landmark_edges_;
   double scale_ = 1.0;
+  double drift_ = 0.0;  // rad per metre of measured odometry translation
 };
 
 }  // namespace doorplate_localization

@@ -83,6 +83,7 @@ struct SlamBackEndResult {
   std::vector<Pose2D> poses;                // per node, map frame
   std::vector<std::optional<Vec2>> plates;  // per plate id, map frame (unset: never read)
   double odometry_scale = 1.0;              // estimated true distance ÷ odometry distance
+  double odometry_heading_drift_rad_per_m = 0.0;  // estimated true − measured heading change per metre
   int alignment_edges = 0;
   int loop_closures = 0;                    // in the final graph
   int loop_closures_dropped = 0;            // by the consistency check (loop_closure_max_residual_sigmas) or
