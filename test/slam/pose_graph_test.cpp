@@ -74,26 +74,31 @@ TEST(PoseGraph, TheFirstNodeStaysWhereItStartedAndDefinesTheMapFrame) {
   EXPECT_LT(PositionError(graph, truth), 1e-5);
 }
 
-// A straight chain along x, 1 m per true step, whose odometry edges all measure 1.02 m; laser-like
-// (non-odometry) edges measure the true step only in the first and last two segments.
+// A straight chain along x, 1 m per true step, started at dead reckoning, whose odometry edges all measure
+// `odometry_step`; laser-like (non-odometry) edges measure the true step only in the first and last two
+// segments.
+PoseGraph ChainSeenByTheLaserAtItsEnds(int nodes, const Pose2D& odometry_step) {
+  PoseGraph graph;
+  std::vector<Pose2D> truth;
+  for (int i = 0; i < nodes; ++i) truth.push_back({static_cast<double>(i), 0, 0});
+  for (int i = 0; i < nodes; ++i) graph.AddNode({odometry_step.x_m * i, 0, 0});
+  for (int i = 0; i + 1 < nodes; ++i) {
+    PoseEdge odometry;
+    odometry.from = i;
+    odometry.to = i + 1;
+    odometry.measurement = odometry_step;
+    odometry.information = Eigen::Vector3d(2500, 2500, 2500).asDiagonal();  // 2 cm, 0.02 rad
+    odometry.odometry = true;
+    graph.AddEdge(odometry);
+  }
+  for (int i : {0, 1, nodes - 3, nodes - 2}) graph.AddEdge(ExactEdge(truth, i, i + 1, 1e4));
+  return graph;
+}
+
+// Odometry 2 % long.
 struct ScaledChain {
   static constexpr int kNodes = 21;
-  PoseGraph graph;
-  ScaledChain() {
-    std::vector<Pose2D> truth;
-    for (int i = 0; i < kNodes; ++i) truth.push_back({static_cast<double>(i), 0, 0});
-    for (int i = 0; i < kNodes; ++i) graph.AddNode({1.02 * i, 0, 0});  // dead reckoning as the start
-    for (int i = 0; i + 1 < kNodes; ++i) {
-      PoseEdge odometry;
-      odometry.from = i;
-      odometry.to = i + 1;
-      odometry.measurement = {1.02, 0, 0};
-      odometry.information = Eigen::Vector3d(2500, 2500, 2500).asDiagonal();  // 2 cm, 0.02 rad
-      odometry.odometry = true;
-      graph.AddEdge(odometry);
-    }
-    for (int i : {0, 1, kNodes - 3, kNodes - 2}) graph.AddEdge(ExactEdge(truth, i, i + 1, 1e4));
-  }
+  PoseGraph graph = ChainSeenByTheLaserAtItsEnds(kNodes, {1.02, 0, 0});
 };
 
 TEST(PoseGraph, AnOdometryChainWithAWrongScaleIsRescaledByTheAlignments) {
@@ -117,25 +122,8 @@ TEST(PoseGraph, WithoutScaleEstimationTheWrongOdometryScaleStretchesTheChain) {
   EXPECT_NEAR(far_x - (ScaledChain::kNodes - 1), 16 * 0.02 + 4 * 0.004, 0.01);
 }
 
-// A straight chain along x, 1 m per step, whose odometry turns 0.01 rad left per metre (unequal wheels);
-// laser-like edges give the true step in the first and last two segments only.
-PoseGraph DriftingChain(int nodes) {
-  PoseGraph graph;
-  std::vector<Pose2D> truth;
-  for (int i = 0; i < nodes; ++i) truth.push_back({static_cast<double>(i), 0, 0});
-  for (int i = 0; i < nodes; ++i) graph.AddNode(truth[i]);
-  for (int i = 0; i + 1 < nodes; ++i) {
-    PoseEdge odometry;
-    odometry.from = i;
-    odometry.to = i + 1;
-    odometry.measurement = {1.0, 0, 0.01};
-    odometry.information = Eigen::Vector3d(2500, 2500, 2500).asDiagonal();  // 2 cm, 0.02 rad
-    odometry.odometry = true;
-    graph.AddEdge(odometry);
-  }
-  for (int i : {0, 1, nodes - 3, nodes - 2}) graph.AddEdge(ExactEdge(truth, i, i + 1, 1e4));
-  return graph;
-}
+// Odometry that turns 0.01 rad left per metre (unequal wheels).
+PoseGraph DriftingChain(int nodes) { return ChainSeenByTheLaserAtItsEnds(nodes, {1.0, 0, 0.01}); }
 
 TEST(PoseGraph, AnOdometryHeadingDriftIsCalibratedAndTheChainStaysStraight) {
   PoseGraph graph = DriftingChain(21);
