@@ -66,10 +66,12 @@ void PrintSummary(const MapEvalResult& r, MapMethod method, std::uint64_t seed, 
   std::printf("  trajectory error (processed scans): RMSE %.3f m, max %.3f m\n", r.trajectory_rmse_m,
               r.trajectory_max_error_m);
   if (r.loop_closures > 0 || r.odometry_scale != 1.0) {
-    std::printf("  back end: odometry scale %.4f (true / odometry distance), heading drift %.5f rad/m, %d loop "
-                "closures (%d dropped as inconsistent); final maps built in %.2f s CPU\n",
-                r.odometry_scale, r.odometry_heading_drift_rad_per_m, r.loop_closures, r.loop_closures_dropped,
-                r.map_build_seconds);
+    std::printf("  back end: odometry scale %.4f (true / odometry distance), %d loop closures (%d dropped as "
+                "inconsistent); final maps built in %.2f s CPU\n",
+                r.odometry_scale, r.loop_closures, r.loop_closures_dropped, r.map_build_seconds);
+    if (r.odometry_heading_drift_rad_per_m != 0.0) {  // estimated (back_end.graph.estimate_odometry_heading_drift)
+      std::printf("  back end: odometry heading drift %.5f rad/m\n", r.odometry_heading_drift_rad_per_m);
+    }
   }
 }
 
