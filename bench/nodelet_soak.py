@@ -169,7 +169,8 @@ class Soak:
     def diag_snapshot(self):
         with self.lock:
             return {name: [level, message, values.get("map in force", ""), values.get("scans dropped", ""),
-                           values.get("last error", values.get("error", ""))]
+                           values.get("last error", values.get("error", "")), values.get("back-end nodes", ""),
+                           values.get("nodes on mapped ground (scan not kept)", "")]
                     for name, (level, message, values) in self.diagnostics.items()}
 
     def record(self, kind, **fields):

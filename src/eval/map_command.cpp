@@ -72,6 +72,10 @@ void PrintSummary(const MapEvalResult& r, MapMethod method, std::uint64_t seed, 
     if (r.odometry_heading_drift_rad_per_m != 0.0) {  // estimated (back_end.graph.estimate_odometry_heading_drift)
       std::printf("  back end: odometry heading drift %.5f rad/m\n", r.odometry_heading_drift_rad_per_m);
     }
+    if (r.nodes_on_mapped_ground > 0) {
+      std::printf("  back end: %d nodes on mapped ground kept no scan (max_nodes_per_place)\n",
+                  r.nodes_on_mapped_ground);
+    }
   }
 }
 

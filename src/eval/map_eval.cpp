@@ -188,6 +188,7 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
     result.odometry_heading_drift_rad_per_m = back_end->odometry_heading_drift_rad_per_m;
     result.loop_closures = back_end->loop_closures;
     result.loop_closures_dropped = back_end->loop_closures_dropped;
+    result.nodes_on_mapped_ground = back_end->nodes_on_mapped_ground;
   }
   // The estimate at the last processed scan (back end, or best particle) vs the truth now: the odometry
   // since then added.

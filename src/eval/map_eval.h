@@ -85,6 +85,7 @@ struct MapEvalResult {
   double odometry_heading_drift_rad_per_m = 0.0;  // back end's heading drift estimate (0 if off)
   int loop_closures = 0;             // back end's scan-alignment loop closures (in the final graph)
   int loop_closures_dropped = 0;     // ... dropped by its consistency check
+  int nodes_on_mapped_ground = 0;    // back-end nodes added without their scan (max_nodes_per_place)
   OccupancyGrid grid;
   TextMap text_map;                  // empty landmarks for method rbpf
   std::vector<Pose2D> trajectory;    // TextSlam::Trajectory(): back end poses (else best particle's), map frame

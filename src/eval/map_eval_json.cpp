@@ -66,6 +66,7 @@ Json MapEvalJson(const MapEvalResult& r, const MapEvalRunInfo& info) {
   j["back_end_odometry_heading_drift_rad_per_m"] = r.odometry_heading_drift_rad_per_m;
   j["back_end_loop_closures"] = r.loop_closures;
   j["back_end_loop_closures_dropped"] = r.loop_closures_dropped;
+  j["back_end_nodes_on_mapped_ground"] = r.nodes_on_mapped_ground;
   j["seconds"] = r.seconds;
   j["sim_seconds"] = r.sim_seconds;
   j["slam_seconds"] = r.slam_seconds;

@@ -227,6 +227,8 @@ diagnostic_msgs::DiagnosticStatus ToMapperDiagnosticStatus(const MapperHealth& h
   add("back-end solves", std::to_string(h.solves));
   add("last solve (s)", number(h.last_solve_s, 2));
   add("solves deferred (solve share)", std::to_string(h.solves_deferred));
+  add("back-end nodes", std::to_string(h.back_end_nodes));
+  add("nodes on mapped ground (scan not kept)", std::to_string(h.nodes_on_mapped_ground));
   add("map", h.map.empty() ? "none yet" : h.map);
   add("last error", h.error.empty() ? "none" : limits::TruncateForLog(h.error, 200));
   return d;

@@ -280,6 +280,8 @@ class SlamMappingNodelet : public nodelet::Nodelet {
     h.solves = session_->counters().solves;
     h.last_solve_s = session_->counters().last_solve_wall_s;
     h.solves_deferred = session_->counters().solves_deferred;
+    h.back_end_nodes = session_->slam().back_end().num_nodes();
+    h.nodes_on_mapped_ground = session_->slam().back_end().nodes_on_mapped_ground();
     if (latest_map_) {
       std::ostringstream map;
       map << latest_map_->info.width << " x " << latest_map_->info.height << " at " << latest_map_->info.resolution

@@ -7,6 +7,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 
 namespace doorplate_localization {
@@ -35,6 +36,9 @@ const SlamBackEndOptions& Validated(const SlamBackEndOptions& o) {
   }
   if (!(o.odometry_min_sigma_m > 0) || !(o.odometry_min_sigma_rad > 0)) fail("odometry_min_sigma_*: must be > 0");
   if (!(o.plate_sigma_m > 0)) fail("plate_sigma_m: must be > 0");
+  if (o.max_nodes_per_place < 0) fail("max_nodes_per_place: must be >= 0 (0: off)");
+  if (!(o.place_radius_m > 0)) fail("place_radius_m: must be > 0");
+  if (!(o.place_max_heading_diff_rad > 0)) fail("place_max_heading_diff_rad: must be > 0");
   if (!(o.icp.point_sigma_m > 0) || !(o.icp.effective_points > 0)) fail("icp: point_sigma_m and effective_points must be > 0");
   if (!(o.icp.degenerate_min_fraction >= 0 && o.icp.degenerate_min_fraction < 1)) {
     fail("icp.degenerate_min_fraction: must be in [0, 1)");
@@ -52,8 +56,10 @@ std::vector<std::vector<int>> SlamBackEnd::LoopClosureCandidates(
   if (!(options_.loop_closure_radius_m > 0)) return candidates;
   const int separation = options_.loop_closure_min_separation;
   for (int j = separation; j < n; ++j) {
+    if (!nodes_[j].has_points) continue;
     std::vector<std::pair<double, int>> near;  // (distance, node)
     for (int i = 0; i + separation <= j; ++i) {
+      if (!nodes_[i].has_points) continue;
       const double d = Norm(pose_of(i).Position() - pose_of(j).Position());
       if (d < options_.loop_closure_radius_m) near.emplace_back(d, i);
     }
@@ -72,9 +78,19 @@ std::vector<std::vector<int>> SlamBackEnd::LoopClosureCandidates(
 
 SlamBackEnd::SlamBackEnd(const SlamBackEndOptions& options) : options_(Validated(options)) {}
 
-void SlamBackEnd::AddNode(std::vector<Vec2> points, const Pose2D& odometry_pose, const Pose2D& front_end_pose,
+bool SlamBackEnd::AddNode(std::vector<Vec2> points, const Pose2D& odometry_pose, const Pose2D& front_end_pose,
                           bool front_end_pinned) {
-  nodes_.push_back({std::move(points), odometry_pose, front_end_pose, front_end_pinned, std::nullopt});
+  const std::optional<int> anchor = FullPlaceAnchor(front_end_pose);
+  nodes_.push_back({std::move(points), odometry_pose, front_end_pose, front_end_pinned, true});
+  if (!anchor) return true;
+  const int node = num_nodes() - 1;
+  const Pose2D guess = nodes_[*anchor].front_end.Between(front_end_pose);
+  if (const std::optional<PoseEdge> edge = Align(*anchor, node, guess, true)) anchor_edges_.push_back(*edge);
+  nodes_.back().points = {};
+  nodes_.back().points.shrink_to_fit();
+  nodes_.back().has_points = false;
+  ++nodes_on_mapped_ground_;
+  return false;
 }
 
 void SlamBackEnd::AddPlateReading(int plate_id, int node, const Vec2& in_node_frame) {
@@ -85,10 +101,37 @@ void SlamBackEnd::AddPlateReading(int plate_id, int node, const Vec2& in_node_fr
   plates_.push_back({plate_id, node, in_node_frame});
 }
 
+std::optional<int> SlamBackEnd::FullPlaceAnchor(const Pose2D& front_end_pose) const {
+  if (options_.max_nodes_per_place <= 0) return std::nullopt;
+  int count = 0, nearest = -1;
+  double nearest_d = options_.place_radius_m;
+  // Earlier visits only: the nodes of this visit (a turn on the spot makes a dozen in one place) map it.
+  const int earlier_than = num_nodes() + 1 - options_.loop_closure_min_separation;  // i + separation <= new
+  for (int i = 0; i < earlier_than; ++i) {
+    if (!nodes_[i].has_points) continue;
+    const Pose2D& p = nodes_[i].front_end;
+    const double d = Norm(p.Position() - front_end_pose.Position());
+    if (d >= options_.place_radius_m ||
+        std::abs(NormalizeAngle(p.theta_rad - front_end_pose.theta_rad)) > options_.place_max_heading_diff_rad) {
+      continue;
+    }
+    ++count;
+    if (d < nearest_d) nearest_d = d, nearest = i;
+  }
+  if (count < options_.max_nodes_per_place) return std::nullopt;
+  return nearest;
+}
+
 const IcpReference& SlamBackEnd::Reference(int node) const {
-  Node& n = nodes_[node];
-  if (!n.reference) n.reference.emplace(n.points, options_.icp);
-  return *n.reference;
+  auto it = std::find_if(references_.begin(), references_.end(), [node](const auto& r) { return r.first == node; });
+  if (it != references_.end()) {
+    references_.splice(references_.begin(), references_, it);
+  } else {
+    references_.emplace_front(std::piecewise_construct, std::forward_as_tuple(node),
+                              std::forward_as_tuple(nodes_[node].points, options_.icp));
+    if (references_.size() > kReferenceCacheSize) references_.pop_back();
+  }
+  return references_.front().second;
 }
 
 std::pair<double, double> SlamBackEnd::OdometryVariances(const Pose2D& step) const {
@@ -146,6 +189,7 @@ PoseGraph SlamBackEnd::BaseGraph(std::map<int, int>* landmark_of_plate) const {
   for (const Node& node : nodes_) graph.AddNode(node.front_end);
   for (int j = 1; j < num_nodes(); ++j) graph.AddEdge(OdometryEdge(j - 1, j));
   for (const PoseEdge& edge : sequential_edges_) graph.AddEdge(edge);
+  for (const PoseEdge& edge : anchor_edges_) graph.AddEdge(edge);
   landmark_of_plate->clear();
   for (const PlateReading& reading : plates_) {
     auto it = landmark_of_plate->find(reading.plate_id);
@@ -184,6 +228,7 @@ SlamBackEndResult SlamBackEnd::Optimize() const {
   for (int j = sequential_done_; j < n; ++j) {
     for (int offset = 1; offset <= options_.max_sequential_offset && j - offset >= 0; offset *= 2) {
       const int i = j - offset;
+      if (!nodes_[i].has_points || !nodes_[j].has_points) continue;
       const Pose2D initial = nodes_[i].odometry.Between(nodes_[j].odometry);
       if (std::hypot(initial.x_m, initial.y_m) > options_.max_alignment_distance_m) continue;
       if (const std::optional<PoseEdge> edge = Align(i, j, initial, false)) sequential_edges_.push_back(*edge);
@@ -195,6 +240,8 @@ SlamBackEndResult SlamBackEnd::Optimize() const {
   PoseGraph graph = BaseGraph(&landmark_of_plate);
   result.alignment_edges = static_cast<int>(sequential_edges_.size());
   result.plate_readings = static_cast<int>(plates_.size());
+  result.nodes_on_mapped_ground = nodes_on_mapped_ground_;
+  result.mapped_ground_alignments = mapped_ground_alignments();
   // Loop closures, aligned afresh at every solve (an alignment made in an earlier solve started from a rougher
   // estimate and may have settled elsewhere). First where the front end's poses say the robot came back: the
   // filter closes loops itself (its particles' maps), which a graph of odometry and sequential alignments

@@ -68,8 +68,9 @@ bool TextSlam::AddScan(const LaserScan& scan, const Pose2D& odometry_pose, int s
   const bool processed = slam_.AddScan(scan, odometry_pose, scan_index, force_update);
   if (processed && options_.back_end.enabled) {
     const bool pinned = slam_.stats().degenerate_scans == degenerate_before;
-    back_end_.AddNode(slam_.MatchPoints(scan), odometry_pose, slam_.BestParticle().pose, pinned);
-    node_scans_.push_back(scan);
+    if (back_end_.AddNode(slam_.MatchPoints(scan), odometry_pose, slam_.BestParticle().pose, pinned)) {
+      node_scans_.emplace_back(back_end_.num_nodes() - 1, scan);
+    }
   }
   return processed;
 }
@@ -227,8 +228,8 @@ OccupancyGrid TextSlam::BuildOccupancyGrid() const {
   if (!solved_) return slam_.BestParticle().map.ToOccupancyGrid();
   const std::vector<Pose2D> poses = Trajectory();
   TiledGrid grid(options_.slam.grid);
-  for (std::size_t i = 0; i < node_scans_.size() && i < poses.size(); ++i) {
-    slam_.IntegrateScanInto(&grid, node_scans_[i], poses[i]);
+  for (const auto& [node, scan] : node_scans_) {
+    if (node < static_cast<int>(poses.size())) slam_.IntegrateScanInto(&grid, scan, poses[node]);
   }
   return grid.ToOccupancyGrid();
 }

@@ -187,8 +187,9 @@ int Run(const Args& args) {
   if (session.BackEndResult()) {
     const dl::SlamBackEndResult& r = *session.BackEndResult();
     std::fprintf(stderr, "doorplate_map_log: back end: %d nodes, %d alignments, %d loop closures (%d dropped as "
-                 "inconsistent), odometry scale %.4f\n", static_cast<int>(r.poses.size()), r.alignment_edges,
-                 r.loop_closures, r.loop_closures_dropped, r.odometry_scale);
+                 "inconsistent), %d on mapped ground without their scan (%d aligned), odometry scale %.4f\n",
+                 static_cast<int>(r.poses.size()), r.alignment_edges, r.loop_closures, r.loop_closures_dropped,
+                 r.nodes_on_mapped_ground, r.mapped_ground_alignments, r.odometry_scale);
     if (r.odometry_heading_drift_rad_per_m != 0.0) {  // estimated (back_end.graph.estimate_odometry_heading_drift)
       std::fprintf(stderr, "doorplate_map_log: back end: odometry heading drift %.5f rad/m\n",
                    r.odometry_heading_drift_rad_per_m);

@@ -260,7 +260,11 @@ TEST(ToMapperDiagnosticStatus, SaysMappingOnlyWhileScansAreTakenAndNamesDropsAnd
   h.solves = 7;
   h.last_solve_s = 1.234;
   h.solves_deferred = 5;
+  h.back_end_nodes = 900;
+  h.nodes_on_mapped_ground = 600;
   d = ToMapperDiagnosticStatus(h, "/slam_mapping: mapping", "/slam_mapping");
+  EXPECT_EQ(value("back-end nodes"), "900");
+  EXPECT_EQ(value("nodes on mapped ground (scan not kept)"), "600");
   EXPECT_EQ(value("scans waiting for the camera"), "3");
   EXPECT_EQ(value("camera waits run out"), "2");
   EXPECT_EQ(value("plates later than the camera wait"), "1");

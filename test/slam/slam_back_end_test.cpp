@@ -258,6 +258,59 @@ TEST(SlamBackEnd, APlateReadingAtANodeThatDoesNotExistThrows) {
   EXPECT_EQ(back_end.Optimize().plate_readings, 1);
 }
 
+TEST(SlamBackEnd, APlaceHoldingMaxNodesPerPlaceNamesItsNearestNodeWithPointsAsAnchor) {
+  SlamBackEndOptions o;
+  o.max_nodes_per_place = 2;
+  o.loop_closure_min_separation = 1;  // every earlier node is an earlier visit
+  SlamBackEnd back_end(o);
+  const auto add = [&](const Pose2D& pose) { return back_end.AddNode(PointsAt(test::Room(), pose), pose, pose); };
+  EXPECT_TRUE(add({0, 0, 0}));
+  EXPECT_FALSE(back_end.FullPlaceAnchor({0.1, 0, 0}).has_value()) << "one node: room for another";
+  EXPECT_TRUE(add({0.3, 0, 0}));
+  ASSERT_TRUE(back_end.FullPlaceAnchor({0.25, 0, 0}).has_value());
+  EXPECT_EQ(*back_end.FullPlaceAnchor({0.25, 0, 0}), 1);
+  EXPECT_EQ(*back_end.FullPlaceAnchor({0.05, 0.1, 0.5}), 0);
+  EXPECT_FALSE(back_end.FullPlaceAnchor({0.15, 0, M_PI}).has_value()) << "facing the other way: another place";
+  EXPECT_FALSE(back_end.FullPlaceAnchor({0.7, 0, 0}).has_value()) << "only node 1 within place_radius_m";
+  EXPECT_FALSE(add({0.2, 0.05, 0.1})) << "a full place: the node keeps no points";
+  EXPECT_EQ(back_end.nodes_on_mapped_ground(), 1);
+  EXPECT_EQ(back_end.mapped_ground_alignments(), 1);
+  EXPECT_EQ(*back_end.FullPlaceAnchor({0.2, 0.05, 0.1}), 1) << "a node without points is never an anchor";
+
+  SlamBackEndOptions one_visit = o;  // the default separation: nodes of the same visit never fill a place
+  one_visit.loop_closure_min_separation = 20;
+  SlamBackEnd turning(one_visit);
+  for (int i = 0; i < 13; ++i) {
+    const Pose2D on_the_spot{0, 0, 0.25 * i};
+    EXPECT_TRUE(turning.AddNode(PointsAt(test::Room(), on_the_spot), on_the_spot, on_the_spot));
+  }
+
+  o.max_nodes_per_place = 0;  // off
+  SlamBackEnd unbounded(o);
+  for (int i = 0; i < 5; ++i) EXPECT_TRUE(unbounded.AddNode(PointsAt(test::Room(), {0, 0, 0}), {0, 0, 0}, {0, 0, 0}));
+  EXPECT_FALSE(unbounded.FullPlaceAnchor({0, 0, 0}).has_value());
+}
+
+TEST(SlamBackEnd, NodesOnMappedGroundArePlacedByTheirAlignmentWithThePlaceNotByTheFrontEnd) {
+  SlamBackEndOptions o;
+  o.max_nodes_per_place = 1;
+  o.loop_closure_min_separation = 1;
+  o.place_max_heading_diff_rad = 0.3;  // RoomRun's nodes are each a place of their own
+  SlamBackEnd back_end(o);
+  const std::vector<Pose2D> truth = RoomRun();
+  for (const Pose2D& pose : truth) back_end.AddNode(PointsAt(test::Room(), pose), pose, pose);
+  // Back at the first pose; odometry and the front end say 0.1 m further east and 0.05 rad off.
+  const Pose2D back{0.05, 0.0, 0.0}, off{0.15, 0.0, 0.05};
+  const Pose2D odometry = truth.back().Compose(truth.back().Between(back)).Compose(back.Between(off));
+  EXPECT_FALSE(back_end.AddNode(PointsAt(test::Room(), back), odometry, off));
+  ASSERT_EQ(back_end.mapped_ground_alignments(), 1);
+  const SlamBackEndResult result = back_end.Optimize();
+  ASSERT_EQ(result.poses.size(), truth.size() + 1);
+  EXPECT_EQ(result.nodes_on_mapped_ground, 1);
+  EXPECT_NEAR(result.poses.back().x_m, back.x_m, 0.03);
+  EXPECT_NEAR(result.poses.back().theta_rad, back.theta_rad, 0.01);
+}
+
 // Expects the constructor to throw std::invalid_argument whose message starts with `field`.
 void ExpectThrowNaming(const SlamBackEndOptions& options, const std::string& field) {
   try {
@@ -324,6 +377,15 @@ TEST(SlamBackEnd, BadOptionsThrowNamingTheField) {
   o = {};
   o.graph.scale_prior_sigma = 0;
   ExpectThrowNaming(o, "SlamBackEndOptions.graph.scale_prior_sigma");
+  o = {};
+  o.max_nodes_per_place = -1;
+  ExpectThrowNaming(o, "SlamBackEndOptions.max_nodes_per_place");
+  o = {};
+  o.place_radius_m = 0;
+  ExpectThrowNaming(o, "SlamBackEndOptions.place_radius_m");
+  o = {};
+  o.place_max_heading_diff_rad = std::nan("");
+  ExpectThrowNaming(o, "SlamBackEndOptions.place_max_heading_diff_rad");
 }
 
 }  // namespace

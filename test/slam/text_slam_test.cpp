@@ -191,6 +191,47 @@ TEST(TextSlam, MapPlatesAndTrajectoryComeFromTheBackEndSolve) {
   EXPECT_NEAR(after.x_m, solve->poses.back().x_m + 0.2, 1e-6);
 }
 
+TEST(TextSlam, PatrolsOverMappedGroundKeepNoScansButEveryPoseAndPlate) {
+  const std::vector<Segment> walls = {{{-0.525, -1.025}, {20.525, -1.025}}, {{-0.525, 1.025}, {20.525, 1.025}},
+                                      {{-0.525, -1.025}, {-0.525, 1.025}}, {{20.525, -1.025}, {20.525, 1.025}}};
+  // East, west (turning on the spot at the end) and east again, a scan every 0.5 m or 0.4 rad, exact
+  // odometry. The first two passes fill every place (place_radius_m 0.5 m: about two nodes each way); the
+  // third finds them full.
+  std::vector<Pose2D> truths;
+  for (int pass = 0; pass < 3; ++pass) {
+    const double heading = pass % 2 == 0 ? 0.0 : M_PI;
+    for (const Pose2D& p : test::PosesAlongX(0.0, 20.0, 0.5)) truths.push_back({pass % 2 == 0 ? p.x_m : 20.0 - p.x_m, 0.0, heading});
+    for (double turn = 0.4; turn < M_PI; turn += 0.4) truths.push_back({truths.back().x_m, 0.0, NormalizeAngle(heading + turn)});
+  }
+  TextSlamOptions options = FewParticles(10);
+  options.back_end.max_nodes_per_place = 2;
+  TextSlam slam(options);
+  for (std::size_t i = 0; i < truths.size(); ++i) {
+    ASSERT_TRUE(slam.AddScan(test::Scan(walls, truths[i], 360, 16.0), truths[i], static_cast<int>(i), true));
+    if (truths[i].x_m == 10.0 && truths[i].theta_rad == 0.0) {  // read on both eastward passes
+      ASSERT_TRUE(slam.AddPlate(Sighting("110", M_PI / 2, 1.025), truths[i]).used());
+    }
+  }
+  slam.Solve();
+  const SlamBackEndResult& solve = *slam.BackEndResult();
+  EXPECT_GT(solve.nodes_on_mapped_ground, 30);
+  EXPECT_GT(solve.mapped_ground_alignments, 30);
+  EXPECT_EQ(solve.plate_readings, 2);
+  const std::vector<Pose2D> trajectory = slam.Trajectory();
+  ASSERT_EQ(trajectory.size(), truths.size()) << "one pose per processed scan, scan kept or not";
+  for (std::size_t i = 0; i < truths.size(); ++i) {
+    EXPECT_NEAR(trajectory[i].x_m, truths[i].x_m, 0.1) << "scan " << i;
+    EXPECT_NEAR(trajectory[i].y_m, truths[i].y_m, 0.05) << "scan " << i;
+  }
+  const std::vector<SlamLandmark> plates = slam.BestLandmarks();
+  ASSERT_EQ(plates.size(), 1u);
+  EXPECT_NEAR(plates[0].position.x, 10.0, 0.15);
+  const OccupancyGrid grid = slam.BuildOccupancyGrid();
+  int cx = 0, cy = 0;
+  ASSERT_TRUE(grid.WorldToCell({20.525, 0.0}, &cx, &cy));
+  EXPECT_EQ(grid.At(cx, cy), OccupancyGrid::kOccupied);
+}
+
 TEST(TextSlam, TheTextMapListsPlatesByWallWithDistancesFromTheMapAndFromOdometry) {
   TextSlam slam(FewParticles(3));
   slam.AddScan(test::Scan(test::Corridor(), {0, 0, 0}), {0, 0, 0}, 0);

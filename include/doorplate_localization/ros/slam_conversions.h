@@ -98,6 +98,8 @@ struct MapperHealth {
   long long solves = 0;            // back-end solves (MappingSession counters)
   double last_solve_s = 0.0;       // wall-clock seconds of the last one
   long long solves_deferred = 0;   // processed scans at which a due solve waited for the solve share
+  int back_end_nodes = 0;          // pose-graph nodes (one per processed scan)
+  int nodes_on_mapped_ground = 0;  // ... of them added without their scan (back_end.max_nodes_per_place)
   std::string map;                 // the last published map, "W x H at R m"; "" none yet
   std::string error;               // the last unexpected exception of a callback ("" none)
 };
@@ -109,7 +111,8 @@ std::string MapperStateText(const MapperHealth& health);
 // state, plus "; last scan dropped: <why>" while scans are dropped; values: state, scan rate, last scan
 // age, scans processed, scans dropped, last drop, particles, neff, landmarks, plates used / ignored, the
 // stamp order's scans waiting for the camera ("off" when they do not wait), waits run out and late plates,
-// solves, the last solve's seconds, solves deferred, map, last error.
+// solves, the last solve's seconds, solves deferred, back-end nodes and those on mapped ground, map, last
+// error.
 diagnostic_msgs::DiagnosticStatus ToMapperDiagnosticStatus(const MapperHealth& health, const std::string& name,
                                                            const std::string& hardware_id);
 

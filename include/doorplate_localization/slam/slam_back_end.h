@@ -17,6 +17,11 @@
 //    false matches and the graph is solved again; last, every closure whose alignment kept its guess along
 //    a direction the scans do not fix is aligned again from the solution (one that no longer aligns is
 //    dropped) and the graph solved once more;
+//  - on mapped ground (a place that already holds max_nodes_per_place nodes with their scans), a new
+//    node keeps no scan: it is aligned once with the place's nearest node (a loop closure made as it is
+//    added, kept between solves) and its points are dropped, so hours of patrol over the same corridor
+//    add a pose and two edges per scan, not a scan (Cartographer trims its pure-localization
+//    trajectories for the same reason); such nodes take no other alignments;
 //  - doorplates: each reading is the plate's position in its node's frame (bearing and range, σ
 //    `plate_sigma_m`); a plate read twice is a loop closure, and the odometry edges between the nodes
 //    where adjacent plates were read are the paper's inter-plate distances (eq. 13; eq. 14's sum is
@@ -24,7 +29,9 @@
 // Frames: map frame = the first node's frame as the filter set it; node points are in base_link.
 #pragma once
 
+#include <cstddef>
 #include <functional>
+#include <list>
 #include <map>
 #include <optional>
 #include <utility>
@@ -75,6 +82,14 @@ struct SlamBackEndOptions {
   double odometry_min_sigma_m = 0.005;
   double odometry_min_sigma_rad = 0.005;
   double plate_sigma_m = 0.15;
+  // Scan budget on mapped ground (bounds memory over hours of patrol): a place (front-end poses within
+  // place_radius_m, heading within place_max_heading_diff_rad) that already holds max_nodes_per_place
+  // nodes with scans from earlier visits (at least loop_closure_min_separation nodes back) takes new nodes
+  // without their scans (see above). 0: off (every node keeps its scan). The default lets about three
+  // passes each way keep their scans (a node every linear_update_m).
+  int max_nodes_per_place = 6;
+  double place_radius_m = 0.5;
+  double place_max_heading_diff_rad = 0.8;
   ScanIcpOptions icp;
   PoseGraphOptions graph;
 };
@@ -89,6 +104,8 @@ struct SlamBackEndResult {
   int loop_closures_dropped = 0;            // by the consistency check (loop_closure_max_residual_sigmas) or
                                             // because they no longer align from the solution
   int plate_readings = 0;
+  int nodes_on_mapped_ground = 0;           // nodes added without their scan (max_nodes_per_place)
+  int mapped_ground_alignments = 0;         // ... of them aligned with their place's node (in the graph)
   PoseGraphSummary summary;                 // of the final solve
 };
 
@@ -101,16 +118,28 @@ class SlamBackEnd {
   // the front end's estimate (base_link in map), used as the starting point. `front_end_pinned`: the front
   // end's scan match fixed the position in every direction (false: along one axis it came from odometry,
   // e.g. in a featureless corridor); only pinned nodes take loop closures the front end's poses propose.
-  void AddNode(std::vector<Vec2> points, const Pose2D& odometry_pose, const Pose2D& front_end_pose,
+  // Returns whether the node kept its points (false: mapped ground, max_nodes_per_place).
+  bool AddNode(std::vector<Vec2> points, const Pose2D& odometry_pose, const Pose2D& front_end_pose,
                bool front_end_pinned = true);
   // A plate reading: the plate's position in the frame of node `node` (0-based, < num_nodes()).
   void AddPlateReading(int plate_id, int node, const Vec2& in_node_frame);
 
+  // With max_nodes_per_place > 0: the nearest node with points of the place around `front_end_pose` (map
+  // frame) when that place already holds max_nodes_per_place of them from earlier visits (a node added now
+  // would be loop_closure_min_separation or more after them; its scan would map nothing new); unset when
+  // the place has room or the budget is off.
+  std::optional<int> FullPlaceAnchor(const Pose2D& front_end_pose) const;
+
   // Builds and solves the graph (sequential alignments are computed once per node and kept).
   SlamBackEndResult Optimize() const;
   int num_nodes() const { return static_cast<int>(nodes_.size()); }
+  // Nodes added without their points (mapped ground), and those of them aligned with their place's node.
+  int nodes_on_mapped_ground() const { return nodes_on_mapped_ground_; }
+  int mapped_ground_alignments() const { return static_cast<int>(anchor_edges_.size()); }
   // The odometry pose given with node `node` (0-based, < num_nodes()).
   const Pose2D& NodeOdometry(int node) const { return nodes_.at(node).odometry; }
+  // The front end's pose given with node `node` (0-based, < num_nodes()).
+  const Pose2D& NodeFrontEnd(int node) const { return nodes_.at(node).front_end; }
   const SlamBackEndOptions& options() const { return options_; }
 
  private:
@@ -119,14 +148,20 @@ class SlamBackEnd {
     Pose2D odometry;
     Pose2D front_end;
     bool front_end_pinned = true;
-    std::optional<IcpReference> reference;  // built on first use
+    bool has_points = true;                 // false: added on mapped ground, points dropped
   };
   struct PlateReading {
     int plate_id;
     int node;
     Vec2 in_node_frame;
   };
+  // Node `node`'s ICP reference (line normals, cell index: ~30 kB, five times its points), from a cache of
+  // the kReferenceCacheSize most recently used ones: the alignments use few references at a time (the nodes
+  // 1-8 back, the nodes of one earlier visit), and keeping one per node grew the mapper by ~30 kB per scan
+  // (the hour's soak, docs/results/nodelet_soak.md). Built again when evicted (same points: same reference,
+  // same results). Valid until the next call.
   const IcpReference& Reference(int node) const;
+  static constexpr std::size_t kReferenceCacheSize = 64;
   // For each node j < n, the nodes a loop closure with j is tried with, nearest first (by `pose_of`): within
   // loop_closure_radius_m, at least loop_closure_min_separation earlier, the nearest of each earlier visit,
   // at most loop_closure_max_tries.
@@ -150,6 +185,9 @@ class SlamBackEnd {
   std::vector<PlateReading> plates_;
   mutable std::vector<PoseEdge> sequential_edges_;  // cached alignments
   mutable int sequential_done_ = 0;                  // nodes whose sequential alignments are cached
+  mutable std::list<std::pair<int, IcpReference>> references_;  // most recently used first
+  std::vector<PoseEdge> anchor_edges_;               // mapped-ground nodes aligned with their place's node
+  int nodes_on_mapped_ground_ = 0;
 
 };
 

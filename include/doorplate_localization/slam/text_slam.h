@@ -16,6 +16,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "doorplate_localization/common/room_id.h"
@@ -78,7 +79,8 @@ class TextSlam {
   explicit TextSlam(const TextSlamOptions& options);
 
   // As RbpfSlam::AddScan (force_update: process it whatever the motion, gmapping's temporalUpdate). With the
-  // back end on, a processed scan is kept for re-rendering. Throws std::invalid_argument for a non-finite
+  // back end on, a processed scan becomes a back-end node and is kept for re-rendering, unless the node was
+  // added on mapped ground (SlamBackEndOptions::max_nodes_per_place: the place already holds enough scans). Throws std::invalid_argument for a non-finite
   // odometry pose (nothing is added).
   bool AddScan(const LaserScan& scan, const Pose2D& odometry_pose, int scan_index, bool force_update = false);
 
@@ -117,6 +119,8 @@ class TextSlam {
   // The best particle's landmarks, in id order; positions from the last solve for the plates it placed.
   std::vector<SlamLandmark> BestLandmarks() const;
   const RbpfSlam& slam() const { return slam_; }
+  // The back end's graph as built so far (nodes, counts); solved only by Solve().
+  const SlamBackEnd& back_end() const { return back_end_; }
   const TextSlamOptions& options() const { return options_; }
   int num_landmarks() const { return next_landmark_id_; }
 
@@ -125,7 +129,8 @@ class TextSlam {
   RoomIdGrammar room_grammar_;          // options_.room_pattern
   RbpfSlam slam_;
   SlamBackEnd back_end_;
-  std::vector<LaserScan> node_scans_;   // the processed scans, for re-rendering (back end on)
+  // The processed scans of the nodes that kept theirs (node index, scan), for re-rendering (back end on).
+  std::vector<std::pair<int, LaserScan>> node_scans_;
   std::optional<SlamBackEndResult> solved_;  // the last Solve()
   int next_landmark_id_ = 0;
   // eq. 13 by odometry: per landmark id, the plate's position in the odometry frame at its first reading.
