@@ -14,7 +14,8 @@ repeats a cycle of faults, each step waiting on a condition (with a timeout), ne
      the next amcl_pose must be near the truth.
 Throughout: the resident memory (VmRSS) of the given processes every --rss-every-s wall seconds; "stale
 state": /amcl/state saying converged or tracking while the truth drove --stale-m without a new amcl_pose;
-/diagnostics of both nodelets (level, message, map in force) at every step. Writes DIR/rss.csv,
+/diagnostics of both nodelets (level, message, map in force, scans dropped, last error; the mapper's back-end
+nodes, those on mapped ground and its last solve's seconds) at every step. Writes DIR/rss.csv,
 DIR/events.csv, DIR/summary.json and prints a summary; exits 1 if a check failed.
 """
 import argparse
@@ -170,7 +171,7 @@ class Soak:
         with self.lock:
             return {name: [level, message, values.get("map in force", ""), values.get("scans dropped", ""),
                            values.get("last error", values.get("error", "")), values.get("back-end nodes", ""),
-                           values.get("nodes on mapped ground (scan not kept)", "")]
+                           values.get("nodes on mapped ground (scan not kept)", ""), values.get("last solve (s)", "")]
                     for name, (level, message, values) in self.diagnostics.items()}
 
     def record(self, kind, **fields):
