@@ -200,8 +200,12 @@ TEST(TextSlam, PatrolsOverMappedGroundKeepNoScansButEveryPoseAndPlate) {
   std::vector<Pose2D> truths;
   for (int pass = 0; pass < 3; ++pass) {
     const double heading = pass % 2 == 0 ? 0.0 : M_PI;
-    for (const Pose2D& p : test::PosesAlongX(0.0, 20.0, 0.5)) truths.push_back({pass % 2 == 0 ? p.x_m : 20.0 - p.x_m, 0.0, heading});
-    for (double turn = 0.4; turn < M_PI; turn += 0.4) truths.push_back({truths.back().x_m, 0.0, NormalizeAngle(heading + turn)});
+    for (const Pose2D& p : test::PosesAlongX(0.0, 20.0, 0.5)) {
+      truths.push_back({pass % 2 == 0 ? p.x_m : 20.0 - p.x_m, 0.0, heading});
+    }
+    for (double turn = 0.4; turn < M_PI; turn += 0.4) {
+      truths.push_back({truths.back().x_m, 0.0, NormalizeAngle(heading + turn)});
+    }
   }
   TextSlamOptions options = FewParticles(10);
   options.back_end.max_nodes_per_place = 2;

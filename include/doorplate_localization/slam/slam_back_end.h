@@ -138,8 +138,6 @@ class SlamBackEnd {
   int mapped_ground_alignments() const { return static_cast<int>(anchor_edges_.size()); }
   // The odometry pose given with node `node` (0-based, < num_nodes()).
   const Pose2D& NodeOdometry(int node) const { return nodes_.at(node).odometry; }
-  // The front end's pose given with node `node` (0-based, < num_nodes()).
-  const Pose2D& NodeFrontEnd(int node) const { return nodes_.at(node).front_end; }
   const SlamBackEndOptions& options() const { return options_; }
 
  private:

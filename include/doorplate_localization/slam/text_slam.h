@@ -80,8 +80,8 @@ class TextSlam {
 
   // As RbpfSlam::AddScan (force_update: process it whatever the motion, gmapping's temporalUpdate). With the
   // back end on, a processed scan becomes a back-end node and is kept for re-rendering, unless the node was
-  // added on mapped ground (SlamBackEndOptions::max_nodes_per_place: the place already holds enough scans). Throws std::invalid_argument for a non-finite
-  // odometry pose (nothing is added).
+  // added on mapped ground (SlamBackEndOptions::max_nodes_per_place: the place already holds enough scans).
+  // Throws std::invalid_argument for a non-finite odometry pose (nothing is added).
   bool AddScan(const LaserScan& scan, const Pose2D& odometry_pose, int scan_index, bool force_update = false);
 
   // A doorplate read at the time of `odometry_pose` (base_link in odom); it is tied to the last processed
