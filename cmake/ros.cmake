@@ -73,9 +73,12 @@ endif()
 
 # Tools that read ROS data (bags): the bag reading of doorplate_map_bag and the mission report (errors naming
 # the bag; fuzz/bag_reader_fuzz.cpp), the report of a simulated mission (scripts/demo.sh).
+# The check of a message's bytes against its type's layout before roscpp deserializes them: ROS-free.
+add_library(doorplate_message_layout STATIC src/ros/tools/message_layout.cpp)
+target_include_directories(doorplate_message_layout PUBLIC src/ros/tools)
 add_library(doorplate_bag_reader STATIC src/ros/tools/bag_reader.cpp src/ros/tools/bag_structure.cpp)
 target_include_directories(doorplate_bag_reader PUBLIC include src/ros/tools ${catkin_INCLUDE_DIRS})
-target_link_libraries(doorplate_bag_reader PUBLIC ${catkin_LIBRARIES})
+target_link_libraries(doorplate_bag_reader PUBLIC doorplate_message_layout ${catkin_LIBRARIES})
 add_library(doorplate_mission_bags STATIC src/ros/tools/mission_bags.cpp)
 target_include_directories(doorplate_mission_bags PUBLIC include src/ros/tools PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(doorplate_mission_bags PUBLIC doorplate_bag_reader doorplate_common ${catkin_LIBRARIES})
@@ -97,6 +100,8 @@ if(CATKIN_ENABLE_TESTING)
   target_link_libraries(mission_bags_test doorplate_mission_bags GTest::gtest_main ${catkin_LIBRARIES})
   catkin_add_gtest(bag_reader_test test/ros/bag_reader_test.cpp)
   target_link_libraries(bag_reader_test doorplate_bag_reader GTest::gtest_main ${catkin_LIBRARIES})
+  add_dependencies(bag_reader_test ${PROJECT_NAME}_generate_messages_cpp)  # checks the detections layout
+  doorplate_add_core_test(message_layout_test test/ros/message_layout_test.cpp doorplate_message_layout)
   catkin_add_gtest(bag_structure_test test/ros/bag_structure_test.cpp)
   target_link_libraries(bag_structure_test doorplate_bag_reader GTest::gtest_main ${catkin_LIBRARIES})
 endif()

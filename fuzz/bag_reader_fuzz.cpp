@@ -22,9 +22,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const auto tf = ReadBagTf(path);
     (void)tf->allFramesAsString();
     ReadBag(path, {"/scan", "/text_detections"}, [](const rosbag::MessageInstance& m, const BagPosition&) {
-      if (const auto scan = m.instantiate<sensor_msgs::LaserScan>()) {
+      if (const auto scan = InstantiateChecked<sensor_msgs::LaserScan>(m)) {
         (void)scan->ranges.size();
-      } else if (const auto array = m.instantiate<TextDetectionArray>()) {
+      } else if (const auto array = InstantiateChecked<TextDetectionArray>(m)) {
         for (const TextDetection& d : array->detections) (void)d.text.size();
       }
     });

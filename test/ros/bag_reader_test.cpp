@@ -9,10 +9,14 @@
 #include <string>
 #include <vector>
 
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
+#include <nav_msgs/Odometry.h>
 #include <rosbag/bag.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_msgs/String.h>
 #include <tf2_msgs/TFMessage.h>
+
+#include "doorplate_localization/TextDetectionArray.h"
 
 namespace doorplate_localization {
 namespace {
@@ -39,6 +43,66 @@ std::string What(const std::function<void()>& read) {
 }
 
 const auto kIgnore = [](const rosbag::MessageInstance&, const BagPosition&) {};
+
+// The bag at `path` with the first `pattern` in it replaced by `replacement` (same length).
+void PatchBag(const std::string& path, const std::string& pattern, const std::string& replacement) {
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t at = bytes.find(pattern);
+  ASSERT_NE(at, std::string::npos);
+  bytes.replace(at, replacement.size(), replacement);
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+std::string Le32(std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); }
+
+// The layout read from T's definition text agrees with roscpp's serializer: an empty T is MinBytes long, a
+// filled one passes, and the same bytes cut by one do not.
+template <class T>
+void ExpectLayoutMatchesRoscpp(const T& filled) {
+  const MessageLayout layout(ros::message_traits::DataType<T>::value(), ros::message_traits::Definition<T>::value());
+  EXPECT_EQ(layout.MinBytes(), ros::serialization::serializationLength(T())) << ros::message_traits::DataType<T>::value();
+  std::vector<std::uint8_t> bytes(ros::serialization::serializationLength(filled));
+  ros::serialization::OStream out(bytes.data(), static_cast<std::uint32_t>(bytes.size()));
+  ros::serialization::serialize(out, filled);
+  EXPECT_EQ(layout.Check(bytes.data(), bytes.size()), "") << ros::message_traits::DataType<T>::value();
+  EXPECT_NE(layout.Check(bytes.data(), bytes.size() - 1), "") << ros::message_traits::DataType<T>::value();
+}
+
+TEST(InstantiateCheckedTest, EveryTypeTheToolsReadHasTheLayoutRoscppSerializes) {
+  tf2_msgs::TFMessage tf;
+  tf.transforms.resize(2);
+  tf.transforms[1].child_frame_id = "laser";
+  ExpectLayoutMatchesRoscpp(tf);
+  ExpectLayoutMatchesRoscpp(Scan(3.0));
+  nav_msgs::Odometry odom;
+  odom.child_frame_id = "base_link";
+  ExpectLayoutMatchesRoscpp(odom);
+  geometry_msgs::PoseWithCovarianceStamped pose;
+  pose.header.frame_id = "map";
+  ExpectLayoutMatchesRoscpp(pose);
+  std_msgs::String text;
+  text.data = "E14-295";
+  ExpectLayoutMatchesRoscpp(text);
+  TextDetectionArray detections;
+  detections.detections.resize(2);
+  detections.detections[0].text = "3.21";
+  ExpectLayoutMatchesRoscpp(detections);
+}
+
+TEST(InstantiateCheckedTest, ReadsWhatInstantiateReadsAndNullForAnotherType) {
+  const std::string path = TempBag("checked");
+  { rosbag::Bag(path, rosbag::bagmode::Write).write("/scan", ros::Time(1.0), Scan(1.0)); }
+  int visited = 0;
+  ReadBag(path, {}, [&visited](const rosbag::MessageInstance& m, const BagPosition&) {
+    ++visited;
+    const auto scan = InstantiateChecked<sensor_msgs::LaserScan>(m);
+    ASSERT_TRUE(scan);
+    EXPECT_EQ(*scan, *m.instantiate<sensor_msgs::LaserScan>());
+    EXPECT_FALSE(InstantiateChecked<std_msgs::String>(m));
+  });
+  EXPECT_EQ(visited, 1);
+}
 
 TEST(ReadBagTest, VisitsTheTopicsMessagesInTimeOrderUnderEitherSpelling) {
   const std::string path = TempBag("topics");
@@ -74,28 +138,44 @@ TEST(ReadBagTest, NamesTheBagItCannotOpenOrRead) {
   EXPECT_NE(what.find("bag_reader_garbage.bag: not a readable bag: Error reading version line"), std::string::npos) << what;
 }
 
-// A scan whose ranges' length prefix says 1000 of the 3 floats there: roscpp's deserializer overruns its buffer.
-TEST(ReadBagTest, AMessageThatDoesNotDeserializeIsAnErrorNamingTheBag) {
+// A scan whose ranges' length prefix says 1000 of the 3 floats there: refused before roscpp reads it.
+TEST(ReadBagTest, AMessageThatDoesNotDeserializeIsAnErrorNamingTheBagTopicAndField) {
   const std::string path = TempBag("overrun");
   { rosbag::Bag(path, rosbag::bagmode::Write).write("/scan", ros::Time(1.0), Scan(1.0)); }
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const float ranges[] = {1.25f, 2.5f, 3.75f};
-  std::string pattern("\x03\x00\x00\x00", 4);
-  pattern.append(reinterpret_cast<const char*>(ranges), sizeof(ranges));
-  const std::size_t at = bytes.find(pattern);
-  ASSERT_NE(at, std::string::npos);
-  bytes.replace(at, 4, std::string("\xe8\x03\x00\x00", 4));  // 1000
-  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+  PatchBag(path, Le32(3) + std::string(reinterpret_cast<const char*>(ranges), sizeof(ranges)), Le32(1000));
   int visited = 0;
   const std::string what = What([&] {
     ReadBag(path, {"/scan"}, [&visited](const rosbag::MessageInstance& m, const BagPosition&) {
       ++visited;
-      m.instantiate<sensor_msgs::LaserScan>();
+      InstantiateChecked<sensor_msgs::LaserScan>(m);
     });
   });
   EXPECT_EQ(visited, 1);
-  EXPECT_NE(what.find("bag_reader_overrun.bag: not a readable bag: "), std::string::npos) << what;
+  EXPECT_NE(what.find("bag_reader_overrun.bag: not a readable bag: topic /scan, message at 1.000 s: "
+                      "sensor_msgs/LaserScan.ranges: 1000 elements of at least 4 bytes, but 16 bytes follow"),
+            std::string::npos)
+      << what;
+}
+
+// The fuzzer's find (CI, issue 18): a TFMessage whose transforms count says 2^32 - 2; roscpp resized the vector
+// to that (583 GB) before reading a byte, and ASan's allocator ended the tool.
+TEST(ReadBagTfTest, ATransformCountBeyondTheMessageIsAnErrorNotAnAllocation) {
+  const std::string path = TempBag("tf_count");
+  {
+    tf2_msgs::TFMessage msg;
+    msg.transforms.resize(1);
+    msg.transforms[0].header.frame_id = "odom";
+    msg.transforms[0].child_frame_id = "base_link";
+    msg.transforms[0].transform.rotation.w = 1.0;
+    rosbag::Bag(path, rosbag::bagmode::Write).write("/tf", ros::Time(100.0), msg);
+  }
+  PatchBag(path, Le32(1) + Le32(0) + Le32(0) + Le32(0) + Le32(4) + "odom", Le32(4294967294u));
+  const std::string what = What([&] { ReadBagTf(path); });
+  EXPECT_NE(what.find("bag_reader_tf_count.bag: not a readable bag: topic /tf, message at 100.000 s: "
+                      "tf2_msgs/TFMessage.transforms: 4294967294 elements of at least 76 bytes"),
+            std::string::npos)
+      << what;
 }
 
 TEST(ReadBagTfTest, KeepsEveryTransformOfTheBagAndTheStaticOnes) {

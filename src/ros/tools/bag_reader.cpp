@@ -1,7 +1,9 @@
 #include "bag_reader.h"
 
 #include <algorithm>
+#include <iomanip>
 #include <new>
+#include <sstream>
 
 #include <ros/exception.h>
 #include <rosbag/bag.h>
@@ -46,6 +48,20 @@ void WithBag(const std::string& path, const std::function<void(rosbag::Bag&)>& r
 
 }  // namespace
 
+std::vector<std::uint8_t> CheckedMessageBytes(const rosbag::MessageInstance& m, const MessageLayout& layout) {
+  std::vector<std::uint8_t> bytes(m.size());
+  ros::serialization::OStream out(bytes.data(), static_cast<std::uint32_t>(bytes.size()));
+  m.write(out);
+  const std::string problem = layout.Check(bytes.data(), bytes.size());
+  if (!problem.empty()) {
+    std::ostringstream what;
+    what << "topic " << m.getTopic() << ", message at " << std::fixed << std::setprecision(3) << m.getTime().toSec()
+         << " s: " << problem;
+    throw ros::serialization::StreamOverrunException(what.str());
+  }
+  return bytes;
+}
+
 void ReadBag(const std::string& path, const std::vector<std::string>& topics,
              const std::function<void(const rosbag::MessageInstance&, const BagPosition&)>& visit) {
   WithBag(path, [&](rosbag::Bag& bag) {
@@ -70,7 +86,7 @@ std::unique_ptr<tf2::BufferCore> ReadBagTf(const std::string& path) {
     const double span_s = all.size() == 0 ? 0.0 : all.getEndTime().toSec() - all.getBeginTime().toSec();
     buffer = std::make_unique<tf2::BufferCore>(ros::Duration(std::clamp(span_s + 60.0, 60.0, 1e9)));
     for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(BothSpellings({"/tf", "/tf_static"})))) {
-      const auto msg = m.instantiate<tf2_msgs::TFMessage>();
+      const auto msg = InstantiateChecked<tf2_msgs::TFMessage>(m);
       if (!msg) continue;
       const bool is_static = m.getTopic() == "/tf_static" || m.getTopic() == "tf_static";
       for (const geometry_msgs::TransformStamped& t : msg->transforms) buffer->setTransform(t, "bag", is_static);

@@ -138,7 +138,7 @@ int MapBag(const Args& args) {
   double driven_m = 0.0;  // odometry path length over the scans used
   std::optional<dl::Pose2D> last_odom;
   dl::ReadBag(args.bag, topics, [&](const rosbag::MessageInstance& m, const dl::BagPosition& at) {
-    if (const auto scan_msg = m.instantiate<sensor_msgs::LaserScan>()) {
+    if (const auto scan_msg = dl::InstantiateChecked<sensor_msgs::LaserScan>(m)) {
       ++n.scans;
       dl::LaserScan scan;
       dl::Pose2D odom_pose;
@@ -149,7 +149,7 @@ int MapBag(const Args& args) {
       const dl::MappingUpdate update = session.AddScan(scan_msg->header.stamp.toSec(), odom_pose, scan);
       if (!update.scan_refused_reason.empty()) Warn(&n.scans_dropped, args.scan_topic, update.scan_refused_reason);
       CountPlates(update.plates, &n);  // sightings recorded before the scans near their stamp
-    } else if (const auto array = m.instantiate<dl::TextDetectionArray>()) {
+    } else if (const auto array = dl::InstantiateChecked<dl::TextDetectionArray>(m)) {
       ++n.arrays;
       std::vector<dl::PlateReading> sightings;
       std::vector<std::string> rejected;

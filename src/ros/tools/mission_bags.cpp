@@ -19,7 +19,7 @@ Pose2D ToPose(const geometry_msgs::Pose& pose) {
 
 // Latched string topics are recorded once per (re)publication; time is the bag's receive time.
 void AddText(const rosbag::MessageInstance& m, std::vector<StampedText>* out) {
-  if (auto msg = m.instantiate<std_msgs::String>()) out->push_back({m.getTime().toSec(), msg->data});
+  if (auto msg = InstantiateChecked<std_msgs::String>(m)) out->push_back({m.getTime().toSec(), msg->data});
 }
 
 }  // namespace
@@ -29,19 +29,19 @@ RecordedRun ReadRecordedRun(const std::string& bag_path) {
   ReadBag(bag_path, {}, [&run](const rosbag::MessageInstance& m, const BagPosition&) {
     const std::string topic = m.getTopic().rfind('/', 0) == 0 ? m.getTopic().substr(1) : m.getTopic();
     if (topic == "base_pose_ground_truth") {
-      if (auto msg = m.instantiate<nav_msgs::Odometry>()) {
+      if (auto msg = InstantiateChecked<nav_msgs::Odometry>(m)) {
         run.truth.push_back({msg->header.stamp.toSec(), ToPose(msg->pose.pose)});
       }
     } else if (topic == "odom") {
-      if (auto msg = m.instantiate<nav_msgs::Odometry>()) {
+      if (auto msg = InstantiateChecked<nav_msgs::Odometry>(m)) {
         run.odometry.push_back({msg->header.stamp.toSec(), ToPose(msg->pose.pose)});
       }
     } else if (topic == "amcl_pose") {
-      if (auto msg = m.instantiate<geometry_msgs::PoseWithCovarianceStamped>()) {
+      if (auto msg = InstantiateChecked<geometry_msgs::PoseWithCovarianceStamped>(m)) {
         run.estimate.push_back({msg->header.stamp.toSec(), ToPose(msg->pose.pose)});
       }
     } else if (topic == "text_detections") {
-      if (auto msg = m.instantiate<TextDetectionArray>()) {
+      if (auto msg = InstantiateChecked<TextDetectionArray>(m)) {
         for (const TextDetection& d : msg->detections) {
           if (d.crossed_center && !d.text.empty()) {
             run.plates.push_back({msg->header.stamp.toSec(), d.text, d.confidence});
