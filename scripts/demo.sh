@@ -90,6 +90,20 @@ wait_for() {
   esac
 }
 
+# What the mapping drive did: the follower's states with their sim times (from the launch log) and the plates
+# of the saved text map (a drive that ended early, e.g. "done" without a way back, shows here, not only as a
+# missing room later). Lines of several nodelets can interleave in the log: a state without its stamp gets "?".
+drive_summary() {
+  /usr/bin/python3 - "$out/mapping.log" "$maps/map.text_map.yaml" <<'PY'
+import re, sys, yaml
+log = open(sys.argv[1], errors="replace").read()
+states = re.findall(r"(?:\[ INFO\] \[[0-9.]+, ([0-9.]+)\]: )?corridor following: ([a-z_0-9]+)", log)
+plates = [l["text"] for l in (yaml.safe_load(open(sys.argv[2])) or {}).get("landmarks") or []]
+print("   drive: " + ", ".join("%s %s" % (name, "%.1f s" % float(t) if t else "?") for t, name in states))
+print("   text map: %d plates: %s" % (len(plates), " ".join(sorted(plates))))
+PY
+}
+
 echo "== 1/3 mapping $(basename "$world") with text, seed $seed (log: $out/mapping.log)"
 roslaunch doorplate_localization mapping.launch world:="$world" seed:="$seed" slam_seed:="$seed" $mapping_drive \
   real_time_factor:=$rtf map_output_dir:="$maps" bag:="$out/mapping.bag" > "$out/mapping.log" 2>&1 &
@@ -98,6 +112,7 @@ wait_for mapping /corridor_follower/state '^done$' "the mapping drive" "$out/map
 rosservice call /slam_mapping/save_maps | tee "$out/save_maps.txt"
 grep -q "success: True" "$out/save_maps.txt" || { echo "saving the maps failed"; exit 1; }
 stop_launch
+drive_summary  # after roslaunch has ended: its output reaches the log late
 
 echo "== 2/3 localization from an unknown pose ($start_x, $start_y, $start_theta deg), then go to room $room"
 roslaunch doorplate_localization localization.launch world:="$world" seed:="$seed" filter_seed:="$seed" \
