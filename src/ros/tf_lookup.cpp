@@ -1,5 +1,6 @@
 #include "doorplate_localization/ros/tf_lookup.h"
 
+#include <cstdio>
 #include <stdexcept>
 
 #include "doorplate_localization/common/limits.h"
@@ -46,6 +47,33 @@ std::optional<Pose2D> LookupPlanarPose(const tf2_ros::Buffer& buffer, const std:
   if (!transform) return std::nullopt;
   try {
     return ToPose2D(*transform);
+  } catch (const std::invalid_argument& e) {  // a non-finite transform
+    *problem = "tf from '" + source + "' to '" + target + "': " + e.what();
+  }
+  return std::nullopt;
+}
+
+std::optional<Pose2D> LookupLatestPlanarPose(const tf2_ros::Buffer& buffer, const std::string& target,
+                                             const std::string& source, const ros::Time& needed_at, double max_lag_s,
+                                             std::string* problem) {
+  geometry_msgs::TransformStamped latest;
+  try {
+    latest = buffer.lookupTransform(target, source, ros::Time(0));
+  } catch (const tf2::TransformException& e) {
+    *problem = NoTf(target, source, e.what());
+    return std::nullopt;
+  }
+  const double lag_s = (needed_at - latest.header.stamp).toSec();
+  if (lag_s > max_lag_s) {
+    char text[160];
+    std::snprintf(text, sizeof(text), " is %.3f s older than needed (at %.3f s; limit %.3f s)", lag_s,
+                  needed_at.toSec(), max_lag_s);
+    *problem = "the latest tf from '" + limits::TruncateForLog(source) + "' to '" + limits::TruncateForLog(target) +
+               "'" + text;
+    return std::nullopt;
+  }
+  try {
+    return ToPose2D(latest.transform);
   } catch (const std::invalid_argument& e) {  // a non-finite transform
     *problem = "tf from '" + source + "' to '" + target + "': " + e.what();
   }

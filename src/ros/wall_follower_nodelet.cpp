@@ -93,9 +93,11 @@ class WallFollowerNodelet : public nodelet::Nodelet {
     }
     if (problem.empty() && (sweep_ || explorer_)) {
       // The latest odometry, not the one at the scan's stamp: the turn is measured by the yaw change, which
-      // a few tens of milliseconds of latency do not disturb, while waiting for the stamp can time out.
-      const std::optional<Pose2D> base_in_odom =
-          LookupPlanarPose(tf_buffer_, options_.odom_frame_id, options_.base_frame_id, ros::Time(0), 0.1, &problem);
+      // a few tens of milliseconds of latency do not disturb, while waiting for the stamp can time out. But not
+      // odometry that stood still while the robot moved on: a turn steered with it overshot (~max_odom_lag_s).
+      const std::optional<Pose2D> base_in_odom = LookupLatestPlanarPose(
+          tf_buffer_, options_.odom_frame_id, options_.base_frame_id, scan->header.stamp, options_.max_odom_lag_s,
+          &problem);
       if (base_in_odom) odom_pose = *base_in_odom;
     }
     if (!problem.empty()) {

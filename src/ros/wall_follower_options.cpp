@@ -77,6 +77,9 @@ const ParamTable<WallFollowerNodeOptions>& WallFollowerParamTable() {
                r::FrameId()),
       Param<O>("scan_timeout_s", DOORPLATE_PARAM_FIELD(scan_timeout_s),
                "no valid scan for this long (ROS time): publish a stop", r::Positive()),
+      Param<O>("max_odom_lag_s", DOORPLATE_PARAM_FIELD(max_odom_lag_s),
+               "sweep/patrol/explore: the latest odom tf older than the scan by more than this: stop until it "
+               "catches up (a turn measured on stale odometry overshoots)", r::Positive()),
       Param<O>("enabled", DOORPLATE_PARAM_FIELD(enabled),
                "start driving at once; `~enable` (std_srvs/SetBool) switches it"),
   };

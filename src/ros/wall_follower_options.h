@@ -34,6 +34,8 @@ struct WallFollowerNodeOptions {
   std::string odom_frame_id = "odom";  // sweep/patrol measure the turn with the odom→base_link yaw
   std::string base_frame_id = "base_link";
   double scan_timeout_s = 0.5;       // no valid scan for this long (ROS time): publish a stop
+  // sweep/patrol/explore steer on the latest odom→base_link; older than the scan by more than this: stop.
+  double max_odom_lag_s = 0.2;
   bool enabled = true;               // ~enabled: start driving at once (else wait for ~enable)
 };
 

@@ -32,4 +32,14 @@ std::optional<Pose2D> LookupPlanarPose(const tf2_ros::Buffer& buffer, const std:
                                        const std::string& source, const ros::Time& stamp, double timeout_s,
                                        std::string* problem);
 
+// The LATEST transform `source` in `target` as a planar pose, for a loop that steers on the newest odometry rather
+// than wait for tf at a sensor reading's stamp, but refused when it is older than `needed_at` by more than
+// `max_lag_s`: *problem = "the latest tf from 'base_link' to 'odom' is 0.500 s older than needed (at 11.500 s;
+// limit 0.300 s)". A turn measured on odometry that stood still while the robot kept turning overshoots (tf's
+// listener thread starved on a loaded machine: a sweep turned ~4 rad instead of pi and ended facing a wall).
+// No tf at all, or a non-finite one: nullopt with LookupPlanarPose's problem.
+std::optional<Pose2D> LookupLatestPlanarPose(const tf2_ros::Buffer& buffer, const std::string& target,
+                                             const std::string& source, const ros::Time& needed_at, double max_lag_s,
+                                             std::string* problem);
+
 }  // namespace doorplate_localization
