@@ -15,17 +15,35 @@ std::string NoTf(const std::string& target, const std::string& source, const cha
          "': " + limits::TruncateForLog(reason, 4 * limits::kMaxLoggedTextBytes);
 }
 
+std::optional<geometry_msgs::TransformStamped> LookupStamped(const tf2_ros::Buffer& buffer, const std::string& target,
+                                                             const std::string& source, const ros::Time& stamp,
+                                                             double timeout_s, std::string* problem) {
+  try {
+    return buffer.lookupTransform(target, source, stamp, ros::Duration(timeout_s));
+  } catch (const tf2::TransformException& e) {
+    *problem = NoTf(target, source, e.what());
+  }
+  return std::nullopt;
+}
+
+std::optional<Pose2D> PlanarPose(const geometry_msgs::Transform& transform, const std::string& target,
+                                 const std::string& source, std::string* problem) {
+  try {
+    return ToPose2D(transform);
+  } catch (const std::invalid_argument& e) {  // a non-finite transform
+    *problem = "tf from '" + source + "' to '" + target + "': " + e.what();
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<geometry_msgs::Transform> LookupTransform(const tf2_ros::Buffer& buffer, const std::string& target,
                                                         const std::string& source, const ros::Time& stamp,
                                                         double timeout_s, std::string* problem) {
-  try {
-    return buffer.lookupTransform(target, source, stamp, ros::Duration(timeout_s)).transform;
-  } catch (const tf2::TransformException& e) {
-    *problem = NoTf(target, source, e.what());
-  }
-  return std::nullopt;
+  const auto stamped = LookupStamped(buffer, target, source, stamp, timeout_s, problem);
+  if (!stamped) return std::nullopt;
+  return stamped->transform;
 }
 
 std::optional<geometry_msgs::Transform> LookupTransform(const tf2::BufferCore& buffer, const std::string& target,
@@ -45,25 +63,15 @@ std::optional<Pose2D> LookupPlanarPose(const tf2_ros::Buffer& buffer, const std:
   const std::optional<geometry_msgs::Transform> transform =
       LookupTransform(buffer, target, source, stamp, timeout_s, problem);
   if (!transform) return std::nullopt;
-  try {
-    return ToPose2D(*transform);
-  } catch (const std::invalid_argument& e) {  // a non-finite transform
-    *problem = "tf from '" + source + "' to '" + target + "': " + e.what();
-  }
-  return std::nullopt;
+  return PlanarPose(*transform, target, source, problem);
 }
 
 std::optional<Pose2D> LookupLatestPlanarPose(const tf2_ros::Buffer& buffer, const std::string& target,
                                              const std::string& source, const ros::Time& needed_at, double max_lag_s,
-                                             std::string* problem) {
-  geometry_msgs::TransformStamped latest;
-  try {
-    latest = buffer.lookupTransform(target, source, ros::Time(0));
-  } catch (const tf2::TransformException& e) {
-    *problem = NoTf(target, source, e.what());
-    return std::nullopt;
-  }
-  const double lag_s = (needed_at - latest.header.stamp).toSec();
+                                             double timeout_s, std::string* problem) {
+  const auto latest = LookupStamped(buffer, target, source, ros::Time(0), timeout_s, problem);
+  if (!latest) return std::nullopt;
+  const double lag_s = (needed_at - latest->header.stamp).toSec();
   if (lag_s > max_lag_s) {
     char text[160];
     std::snprintf(text, sizeof(text), " is %.3f s older than needed (at %.3f s; limit %.3f s)", lag_s,
@@ -72,12 +80,7 @@ std::optional<Pose2D> LookupLatestPlanarPose(const tf2_ros::Buffer& buffer, cons
                "'" + text;
     return std::nullopt;
   }
-  try {
-    return ToPose2D(latest.transform);
-  } catch (const std::invalid_argument& e) {  // a non-finite transform
-    *problem = "tf from '" + source + "' to '" + target + "': " + e.what();
-  }
-  return std::nullopt;
+  return PlanarPose(latest->transform, target, source, problem);
 }
 
 }  // namespace doorplate_localization

@@ -97,7 +97,7 @@ class WallFollowerNodelet : public nodelet::Nodelet {
       // odometry that stood still while the robot moved on: a turn steered with it overshot (~max_odom_lag_s).
       const std::optional<Pose2D> base_in_odom = LookupLatestPlanarPose(
           tf_buffer_, options_.odom_frame_id, options_.base_frame_id, scan->header.stamp, options_.max_odom_lag_s,
-          &problem);
+          0.1, &problem);
       if (base_in_odom) odom_pose = *base_in_odom;
     }
     if (!problem.empty()) {

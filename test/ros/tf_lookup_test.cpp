@@ -70,13 +70,13 @@ TEST_F(TfLookupTest, AHugeFrameNameIsQuotedByItsStartOnly) {
 // The sweep's odometry: the newest transform, unless it lags the scan it serves by more than the limit.
 TEST_F(TfLookupTest, TheLatestPoseIsRefusedWhenItLagsWhatItServesByMoreThanTheLimit) {
   const std::optional<Pose2D> fresh =
-      LookupLatestPlanarPose(buffer_, "odom", "base_link", ros::Time(11.2), 0.3, &problem_);
+      LookupLatestPlanarPose(buffer_, "odom", "base_link", ros::Time(11.2), 0.3, 0.0, &problem_);
   ASSERT_TRUE(fresh.has_value()) << problem_;
   EXPECT_NEAR(fresh->x_m, 2.0, 1e-9);
-  EXPECT_TRUE(LookupLatestPlanarPose(buffer_, "odom", "base_link", ros::Time(10.5), 0.3, &problem_).has_value());
-  EXPECT_FALSE(LookupLatestPlanarPose(buffer_, "odom", "base_link", ros::Time(11.5), 0.3, &problem_).has_value());
+  EXPECT_TRUE(LookupLatestPlanarPose(buffer_, "odom", "base_link", ros::Time(10.5), 0.3, 0.0, &problem_).has_value());
+  EXPECT_FALSE(LookupLatestPlanarPose(buffer_, "odom", "base_link", ros::Time(11.5), 0.3, 0.0, &problem_).has_value());
   EXPECT_EQ(problem_, "the latest tf from 'base_link' to 'odom' is 0.500 s older than needed (at 11.500 s; limit 0.300 s)");
-  EXPECT_FALSE(LookupLatestPlanarPose(buffer_, "odom", "nowhere", ros::Time(11.0), 0.3, &problem_).has_value());
+  EXPECT_FALSE(LookupLatestPlanarPose(buffer_, "odom", "nowhere", ros::Time(11.0), 0.3, 0.0, &problem_).has_value());
   EXPECT_EQ(problem_.rfind("no tf from 'nowhere' to 'odom': ", 0), 0u) << problem_;
 }
 

@@ -37,9 +37,10 @@ std::optional<Pose2D> LookupPlanarPose(const tf2_ros::Buffer& buffer, const std:
 // `max_lag_s`: *problem = "the latest tf from 'base_link' to 'odom' is 0.500 s older than needed (at 11.500 s;
 // limit 0.300 s)". A turn measured on odometry that stood still while the robot kept turning overshoots (tf's
 // listener thread starved on a loaded machine: a sweep turned ~4 rad instead of pi and ended facing a wall).
-// No tf at all, or a non-finite one: nullopt with LookupPlanarPose's problem.
+// No tf at all within `timeout_s` (waited for at the start, when none has come yet), or a non-finite one:
+// nullopt with LookupPlanarPose's problem.
 std::optional<Pose2D> LookupLatestPlanarPose(const tf2_ros::Buffer& buffer, const std::string& target,
                                              const std::string& source, const ros::Time& needed_at, double max_lag_s,
-                                             std::string* problem);
+                                             double timeout_s, std::string* problem);
 
 }  // namespace doorplate_localization
