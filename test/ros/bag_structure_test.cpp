@@ -109,6 +109,34 @@ TEST(CheckBagStructureTest, WalksFromTheEndOfTheVersionLineAsRosbagReadsItAndRef
   EXPECT_EQ(CheckBagStructure(path), "bag format version 1.2: only 2.0 (every bag since ROS C Turtle, 2010) is read");
 }
 
+// `bytes` (a bag) with `spaces` spaces before the version line's newline; the bag header's index position and
+// the chunk infos' chunk positions moved with the records, so only the version line differs.
+std::string WithSpacesInTheVersionLine(std::string bytes, std::uint64_t spaces) {
+  for (const std::string name : {"index_pos=", "chunk_pos="}) {
+    for (std::size_t at = bytes.find(name); at != std::string::npos; at = bytes.find(name, at + 1)) {
+      std::uint64_t position = 0;
+      std::memcpy(&position, bytes.data() + at + name.size(), 8);
+      position += spaces;
+      std::memcpy(bytes.data() + at + name.size(), &position, 8);
+    }
+  }
+  return bytes.insert(12, std::string(spaces, ' '));
+}
+
+// CI's fuzzer find: rosbag reads the version line with fgets into 1024 bytes, so a line longer than 1023 bytes
+// ends there for rosbag, and the next 4 bytes (spaces: 538976288) were read as a header length and allocated.
+TEST(CheckBagStructureTest, StartsTheRecordsWhereRosbagStopsReadingALongVersionLine) {
+  const std::string path = GoodBag("long_version_line", rosbag::compression::Uncompressed);
+  const std::string bytes = ReadAll(path);
+  WriteAll(path, WithSpacesInTheVersionLine(bytes, 1100));  // "#ROSBAG V2.0" and 1100 spaces, then its newline
+  EXPECT_NE(CheckBagStructure(path).find("record at byte 1023: header length 538976288, but only"), std::string::npos)
+      << CheckBagStructure(path);
+  WriteAll(path, WithSpacesInTheVersionLine(bytes, 1010));  // 1023 bytes with the newline: rosbag reads it whole
+  EXPECT_EQ(CheckBagStructure(path), "");
+  rosbag::Bag bag;
+  EXPECT_NO_THROW(bag.open(path, rosbag::bagmode::Read));
+}
+
 TEST(CheckBagStructureTest, RefusesACompressedChunkClaimingMoreThanTheLimit) {
   const std::string path = GoodBag("big_chunk", rosbag::compression::BZ2);
   std::string bytes = ReadAll(path);

@@ -12,6 +12,7 @@
 namespace doorplate_localization {
 namespace {
 
+constexpr std::size_t kBagVersionLineMaxBytes = 1023;  // rosbag's fgets buffer of 1024, less the NUL
 constexpr char kOpBagHeader = 0x03, kOpChunk = 0x05, kOpConnection = 0x07, kOpIndexData = 0x04, kOpChunkInfo = 0x06;
 
 template <typename T>
@@ -132,18 +133,22 @@ std::string CheckBagStructure(const std::string& path) {
   in.seekg(0, std::ios::end);
   const std::uint64_t file_size = static_cast<std::uint64_t>(in.tellg());
   in.seekg(0);
-  // The version line as rosbag reads it: up to the first newline, "#ROS<name> V<major>.<minor>".
-  std::string version_line;
-  std::getline(in, version_line);
-  if (!in) return "";  // no newline: rosbag fails on what follows
+  // The version line exactly as rosbag reads it (ChunkedFile::getline): fgets into 1024 bytes, so at most 1023
+  // bytes up to and including the first newline; the records start where fgets stopped reading, which is not
+  // after the newline when the line is longer (a fuzzing find: a long line of spaces became a 514 MB header).
+  std::string version_line(kBagVersionLineMaxBytes, '\0');
+  in.read(version_line.data(), kBagVersionLineMaxBytes);
+  version_line.resize(static_cast<std::size_t>(in.gcount()));
+  const std::size_t newline = version_line.find('\n');
+  if (newline != std::string::npos) version_line.resize(newline + 1);
+  const std::uint64_t records_at = version_line.size();
   char name[100];
-  int major = 0, minor = 0;
+  int major = 0, minor = 0;  // sscanf stops at a NUL byte, as rosbag's does
   if (std::sscanf(version_line.c_str(), "#ROS%99s V%d.%d", name, &major, &minor) != 3) return "";  // rosbag says so
   if (major != 2 || minor != 0) {
     return "bag format version " + std::to_string(major) + "." + std::to_string(minor) +
            ": only 2.0 (every bag since ROS C Turtle, 2010) is read";
   }
-  const std::uint64_t records_at = version_line.size() + 1;
   const ReadBytes read = [&in](std::uint64_t from, std::uint32_t n) {
     std::string bytes(n, '\0');
     in.clear();
