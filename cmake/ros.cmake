@@ -76,9 +76,16 @@ endif()
 # The check of a message's bytes against its type's layout before roscpp deserializes them: ROS-free.
 add_library(doorplate_message_layout STATIC src/ros/tools/message_layout.cpp)
 target_include_directories(doorplate_message_layout PUBLIC src/ros/tools)
+# The structure check decompresses chunks as rosbag does: libbz2 and roslz4 (rosbag's own dependencies:
+# libbz2-dev, libroslz4-dev; roslz4 ships no CMake config).
+find_package(BZip2 REQUIRED)
+find_library(ROSLZ4_LIBRARY roslz4 REQUIRED)
+find_path(ROSLZ4_INCLUDE_DIR roslz4/lz4s.h REQUIRED)
 add_library(doorplate_bag_reader STATIC src/ros/tools/bag_reader.cpp src/ros/tools/bag_structure.cpp)
-target_include_directories(doorplate_bag_reader PUBLIC include src/ros/tools ${catkin_INCLUDE_DIRS})
-target_link_libraries(doorplate_bag_reader PUBLIC doorplate_message_layout ${catkin_LIBRARIES})
+target_include_directories(doorplate_bag_reader PUBLIC include src/ros/tools ${catkin_INCLUDE_DIRS}
+                           PRIVATE ${ROSLZ4_INCLUDE_DIR})
+target_link_libraries(doorplate_bag_reader PUBLIC doorplate_message_layout ${catkin_LIBRARIES}
+                      PRIVATE BZip2::BZip2 ${ROSLZ4_LIBRARY})
 add_library(doorplate_mission_bags STATIC src/ros/tools/mission_bags.cpp)
 target_include_directories(doorplate_mission_bags PUBLIC include src/ros/tools PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(doorplate_mission_bags PUBLIC doorplate_bag_reader doorplate_common ${catkin_LIBRARIES})

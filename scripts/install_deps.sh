@@ -15,7 +15,7 @@ DEMO_PKGS=(
   libnodeletlib-dev libnodeletlib-tools pluginlib-dev libtf2-ros-dev libtf2-geometry-msgs-dev
   libsensor-msgs-dev libnav-msgs-dev libgeometry-msgs-dev libvisualization-msgs-dev libstd-srvs-dev libdiagnostic-msgs-dev
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure  # Text AMCL's cfg/TextAmcl.cfg
-  librosbag-dev libcv-bridge-dev libimage-transport-dev
+  librosbag-dev libbz2-dev libroslz4-dev libcv-bridge-dev libimage-transport-dev
   python3-sensor-msgs python3-nav-msgs python3-geometry-msgs python3-tf2-msgs python3-std-msgs python3-std-srvs python3-rosservice
   # core libraries (gtest: the build is configured with its tests, as scripts/test.sh's; CLI11 and nlohmann-json:
   # header-only, the tools' command lines and results files, found by the top CMakeLists.txt, so every build needs them)

@@ -108,6 +108,8 @@ begin map_bag_tf_count_beyond_the_message tf_claims_4294967294_transforms.bag; e
 expect 1 'tf_claims_4294967294_transforms\.bag: not a readable bag: topic /tf, message at 10\.000 s: tf2_msgs/TFMessage\.transforms: 4294967294 elements of at least 76 bytes, but 89 bytes follow' doorplate_map_bag tf_claims_4294967294_transforms.bag --out-dir out
 begin map_bag_version_line_longer_than_rosbag_reads version_line_of_1112_bytes.bag; earlier_result out
 expect 1 'version_line_of_1112_bytes\.bag: not a readable bag: record at byte 1023: header length 538976288, but only [0-9]+ bytes follow' doorplate_map_bag version_line_of_1112_bytes.bag --out-dir out
+begin map_bag_message_past_its_compressed_chunk bz2_message_data_beyond_chunk.bag; earlier_result out
+expect 1 'bz2_message_data_beyond_chunk\.bag: not a readable bag: chunk at byte 4117: record at byte 2255: data length 200000, but only 8591 bytes follow' doorplate_map_bag bz2_message_data_beyond_chunk.bag --out-dir out
 begin map_bag_missing_bag
 expect 1 'no_such\.bag' doorplate_map_bag no_such.bag --out-dir out
 begin map_bag_out_over_its_bag garbage.bag; mkdir out; mv garbage.bag out/map.pgm

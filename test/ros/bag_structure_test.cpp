@@ -5,9 +5,12 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <string>
 
+#include <bzlib.h>
+#include <roslz4/lz4s.h>
 #include <rosbag/bag.h>
 #include <std_msgs/String.h>
 
@@ -135,6 +138,80 @@ TEST(CheckBagStructureTest, StartsTheRecordsWhereRosbagStopsReadingALongVersionL
   EXPECT_EQ(CheckBagStructure(path), "");
   rosbag::Bag bag;
   EXPECT_NO_THROW(bag.open(path, rosbag::bagmode::Read));
+}
+
+// A record header field's value (the bytes after "<name>=") in the header at `at` (its length first).
+std::string FieldOf(const std::string& bytes, std::size_t at, const std::string& name) {
+  const std::string header = bytes.substr(at + 4, U32(bytes, at));
+  for (std::size_t f = 0; f + 4 <= header.size(); f += 4 + U32(header, f)) {
+    const std::string field = header.substr(f + 4, U32(header, f));
+    if (field.rfind(name + "=", 0) == 0) return field.substr(name.size() + 1);
+  }
+  return "";
+}
+
+// `bytes` (a bag of one compressed chunk) with that chunk's records changed by `change`, compressed again; the
+// chunk's data length and the bag header's index position follow the new compressed length.
+std::string WithChunkRecords(const std::string& bytes, const std::function<void(std::string*)>& change) {
+  const std::size_t chunk = RecordWithOp(bytes, '\x05');
+  const std::size_t length_at = chunk + 4 + U32(bytes, chunk);
+  const std::string compression = FieldOf(bytes, chunk, "compression");
+  std::string data = bytes.substr(length_at + 4, U32(bytes, length_at));
+  std::uint32_t size = 0;
+  std::memcpy(&size, FieldOf(bytes, chunk, "size").data(), 4);
+  std::string records(size, '\0');
+  std::string again(size + size / 50 + 1024, '\0');
+  unsigned int records_size = size, again_size = static_cast<unsigned int>(again.size());
+  if (compression == "bz2") {
+    EXPECT_EQ(BZ2_bzBuffToBuffDecompress(records.data(), &records_size, data.data(), data.size(), 0, 0), BZ_OK);
+    change(&records);
+    EXPECT_EQ(BZ2_bzBuffToBuffCompress(again.data(), &again_size, records.data(), size, 9, 0, 30), BZ_OK);
+  } else {
+    EXPECT_EQ(roslz4_buffToBuffDecompress(data.data(), data.size(), records.data(), &records_size), ROSLZ4_OK);
+    change(&records);
+    EXPECT_EQ(roslz4_buffToBuffCompress(records.data(), size, again.data(), &again_size, 6), ROSLZ4_OK);
+  }
+  again.resize(again_size);
+  std::string out = bytes.substr(0, length_at) + std::string(4, '\0') + again + bytes.substr(length_at + 4 + data.size());
+  std::memcpy(out.data() + length_at, &again_size, 4);
+  const std::size_t index_pos_at = out.find("index_pos=") + 10;
+  std::uint64_t index_pos = 0;
+  std::memcpy(&index_pos, out.data() + index_pos_at, 8);
+  index_pos = index_pos + again.size() - data.size();
+  std::memcpy(out.data() + index_pos_at, &index_pos, 8);
+  return out;
+}
+
+// rosbag reads the records of a decompressed chunk from its buffer without checking their lengths: a message
+// header length beyond the chunk would be read past the buffer. Checked in bz2 and lz4 chunks alike.
+TEST(CheckBagStructureTest, WalksTheRecordsInsideCompressedChunks) {
+  for (const auto compression : {rosbag::compression::BZ2, rosbag::compression::LZ4}) {
+    const std::string path = GoodBag("compressed_records", compression);
+    const std::string bytes = ReadAll(path);
+    WriteAll(path, WithChunkRecords(bytes, [](std::string*) {}));  // recompressed unchanged: still a good bag
+    EXPECT_EQ(CheckBagStructure(path), "");
+    rosbag::Bag bag;
+    EXPECT_NO_THROW(bag.open(path, rosbag::bagmode::Read));
+    bag.close();
+    WriteAll(path, WithChunkRecords(bytes, [](std::string* records) {
+      const std::uint32_t huge = 1u << 30;
+      std::memcpy(records->data(), &huge, 4);  // the chunk's first record: its header length
+    }));
+    const std::string chunk = std::to_string(RecordWithOp(bytes, '\x05'));
+    EXPECT_NE(CheckBagStructure(path).find("chunk at byte " + chunk + ": record at byte 0: header length 1073741824, but only"),
+              std::string::npos) << CheckBagStructure(path);
+  }
+}
+
+TEST(CheckBagStructureTest, RefusesACompressedChunkWhoseDataDoesNotDecompressToItsSize) {
+  const std::string path = GoodBag("bad_bz2", rosbag::compression::BZ2);
+  std::string bytes = ReadAll(path);
+  const std::size_t chunk = RecordWithOp(bytes, '\x05');
+  const std::size_t data_at = chunk + 4 + U32(bytes, chunk) + 4;
+  bytes[data_at + 20] = static_cast<char>(bytes[data_at + 20] ^ 0x5A);  // inside the bz2 stream
+  WriteAll(path, bytes);
+  EXPECT_NE(CheckBagStructure(path).find("record at byte " + std::to_string(chunk) + ": chunk: its bz2 data does not decompress"),
+            std::string::npos) << CheckBagStructure(path);
 }
 
 TEST(CheckBagStructureTest, RefusesACompressedChunkClaimingMoreThanTheLimit) {

@@ -5,9 +5,13 @@
 #include <functional>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <vector>
+
+#include <bzlib.h>
+#include <roslz4/lz4s.h>
 
 namespace doorplate_localization {
 namespace {
@@ -37,6 +41,32 @@ std::string ParseFields(const std::string& header, std::map<std::string, std::st
     (*fields)[field.substr(0, eq)] = field.substr(eq + 1);
   }
   return "";
+}
+
+// A compressed chunk's records as rosbag decompresses them (bz2: libbz2, lz4: roslz4; rosbag then reads
+// their headers from the buffer without checking their lengths): the `size` bytes, or unset with `problem`
+// set when the data does not decompress to exactly that many. Unset without a problem: a compression rosbag
+// does not know (it refuses the bag itself).
+std::optional<std::string> Decompressed(const std::string& compression, std::string data, std::uint32_t size,
+                                        std::string* problem) {
+  std::string out(size, '\0');
+  unsigned int out_size = size;
+  int status = 0;
+  if (compression == "bz2") {
+    status = BZ2_bzBuffToBuffDecompress(out.data(), &out_size, data.data(), static_cast<unsigned int>(data.size()), 0, 0);
+    if (status != BZ_OK) *problem = "its bz2 data does not decompress (libbz2 error " + std::to_string(status) + ")";
+  } else if (compression == "lz4") {
+    status = roslz4_buffToBuffDecompress(data.data(), static_cast<unsigned int>(data.size()), out.data(), &out_size);
+    if (status != ROSLZ4_OK) *problem = "its lz4 data does not decompress (roslz4 error " + std::to_string(status) + ")";
+  } else {
+    return std::nullopt;
+  }
+  if (problem->empty() && out_size != size) {
+    *problem = "its " + compression + " data decompresses to " + std::to_string(out_size) + " bytes, not its size " +
+               std::to_string(size);
+  }
+  if (!problem->empty()) return std::nullopt;
+  return out;
 }
 
 struct Chunk {
@@ -100,8 +130,16 @@ std::string WalkRecords(const ReadBytes& read, std::uint64_t begin, std::uint64_
         return problem.str();
       }
       walk->chunks.push_back({at, static_cast<std::uint32_t>(size)});
-      if (!compressed) {  // its records (connections, messages): rosbag parses their headers too
-        const std::string data = read(data_at + 4, static_cast<std::uint32_t>(size));
+      // Its records (connections, messages): rosbag parses their headers too.
+      std::optional<std::string> records = read(data_at + 4, compressed ? data_length : static_cast<std::uint32_t>(size));
+      if (compressed) {
+        std::string decompress_problem;
+        records = Decompressed(fields["compression"], std::move(*records), static_cast<std::uint32_t>(size),
+                               &decompress_problem);
+        if (!decompress_problem.empty()) return problem.str() + "chunk: " + decompress_problem;
+      }
+      if (records) {
+        const std::string& data = *records;
         Walk inside;
         const std::string inner = WalkRecords([&data](std::uint64_t from, std::uint32_t n) { return data.substr(from, n); },
                                               0, data.size(), where + "chunk at byte " + std::to_string(at) + ": ", &inside);

@@ -3,8 +3,9 @@
 // ros::Header::parse (roscpp's, which rosbag uses for every record header) reads a field as long as its length
 // says, past the end of the header (fuzz/bag_reader_fuzz.cpp found both: an 18 kB bag whose connection record
 // claims a 2.3 GB header; a header field running past its record). Walks the file's records reading their
-// headers, the connection headers, the small index records and the records inside uncompressed chunks.
-// Not checked: the records inside compressed (bz2, lz4) chunks, which rosbag decompresses itself.
+// headers, the connection headers, the small index records and the records inside every chunk (compressed
+// ones decompressed as rosbag does: bz2, lz4; rosbag reads the records of a decompressed chunk from its
+// buffer without checking their lengths). Reading a bag so costs one extra decompression of its chunks.
 #pragma once
 
 #include <cstdint>
@@ -17,7 +18,8 @@ inline constexpr std::uint32_t kMaxBagChunkBytes = 256u << 20;
 
 // "" if every record of the bag at `path` fits in the file or chunk (header and data lengths, every header
 // field within its header, a connection record's data fields within its data), every
-// chunk's uncompressed size is within kMaxBagChunkBytes (and within its data when uncompressed), the bag
+// chunk's uncompressed size is within kMaxBagChunkBytes (and within its data when uncompressed; a compressed
+// chunk's data decompresses to exactly that size), every record inside a chunk fits in it, the bag
 // header's index position and every chunk info's chunk position are record starts, and every index entry's
 // offset lies inside its chunk; else the first problem, e.g. "record at byte 4321: header length 2315255808,
 // but only 13880 bytes follow". The records start where rosbag's reading of the version line stops (after
