@@ -172,7 +172,8 @@ std::string WithChunkRecords(const std::string& bytes, const std::function<void(
     EXPECT_EQ(roslz4_buffToBuffCompress(records.data(), size, again.data(), &again_size, 6), ROSLZ4_OK);
   }
   again.resize(again_size);
-  std::string out = bytes.substr(0, length_at) + std::string(4, '\0') + again + bytes.substr(length_at + 4 + data.size());
+  std::string out =
+      bytes.substr(0, length_at) + std::string(4, '\0') + again + bytes.substr(length_at + 4 + data.size());
   std::memcpy(out.data() + length_at, &again_size, 4);
   const std::size_t index_pos_at = out.find("index_pos=") + 10;
   std::uint64_t index_pos = 0;
@@ -198,8 +199,8 @@ TEST(CheckBagStructureTest, WalksTheRecordsInsideCompressedChunks) {
       std::memcpy(records->data(), &huge, 4);  // the chunk's first record: its header length
     }));
     const std::string chunk = std::to_string(RecordWithOp(bytes, '\x05'));
-    EXPECT_NE(CheckBagStructure(path).find("chunk at byte " + chunk + ": record at byte 0: header length 1073741824, but only"),
-              std::string::npos) << CheckBagStructure(path);
+    const std::string expected = "chunk at byte " + chunk + ": record at byte 0: header length 1073741824, but only";
+    EXPECT_NE(CheckBagStructure(path).find(expected), std::string::npos) << CheckBagStructure(path);
   }
 }
 
@@ -210,8 +211,8 @@ TEST(CheckBagStructureTest, RefusesACompressedChunkWhoseDataDoesNotDecompressToI
   const std::size_t data_at = chunk + 4 + U32(bytes, chunk) + 4;
   bytes[data_at + 20] = static_cast<char>(bytes[data_at + 20] ^ 0x5A);  // inside the bz2 stream
   WriteAll(path, bytes);
-  EXPECT_NE(CheckBagStructure(path).find("record at byte " + std::to_string(chunk) + ": chunk: its bz2 data does not decompress"),
-            std::string::npos) << CheckBagStructure(path);
+  const std::string expected = "record at byte " + std::to_string(chunk) + ": chunk: its bz2 data does not decompress";
+  EXPECT_NE(CheckBagStructure(path).find(expected), std::string::npos) << CheckBagStructure(path);
 }
 
 TEST(CheckBagStructureTest, RefusesACompressedChunkClaimingMoreThanTheLimit) {

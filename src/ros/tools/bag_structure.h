@@ -24,7 +24,8 @@ inline constexpr std::uint32_t kMaxBagChunkBytes = 256u << 20;
 // offset lies inside its chunk; else the first problem, e.g. "record at byte 4321: header length 2315255808,
 // but only 13880 bytes follow". The records start where rosbag's reading of the version line stops (after
 // the first newline, or after 1023 bytes when the line is longer; "#ROS<name> V<major>.<minor>"); a version
-// other than 2.0 is refused (rosbag's readers of the 1.x formats are not checked here); a file without a version line is left to rosbag ("" returned: it says so).
+// other than 2.0 is refused (rosbag's readers of the 1.x formats are not checked here); a file without a
+// version line is left to rosbag ("" returned: it says so).
 std::string CheckBagStructure(const std::string& path);
 
 }  // namespace doorplate_localization
