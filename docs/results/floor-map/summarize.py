@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
-"""Prints the whole-floor mapping tables (markdown) from the doorplate_eval map JSON files in this folder:
-one row per run (drive, pass ends, closing error, plates, worst corridor), then per corridor over the runs."""
-import glob, json, os, statistics
+"""Prints the whole-floor mapping tables (markdown) from the doorplate_eval map JSON files in this folder (or
+the folder given: python3 summarize.py [FOLDER]): one row per run (drive, pass ends, closing error, plates,
+worst corridor), then per corridor over the runs."""
+import glob, json, os, statistics, sys
 
-folder = os.path.dirname(os.path.abspath(__file__))
+folder = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))
 runs = []
 for path in sorted(glob.glob(os.path.join(folder, "*.json"))):
     with open(path) as f:
