@@ -110,6 +110,8 @@ begin map_bag_version_line_longer_than_rosbag_reads version_line_of_1112_bytes.b
 expect 1 'version_line_of_1112_bytes\.bag: not a readable bag: record at byte 1023: header length 538976288, but only [0-9]+ bytes follow' doorplate_map_bag version_line_of_1112_bytes.bag --out-dir out
 begin map_bag_message_past_its_compressed_chunk bz2_message_data_beyond_chunk.bag; earlier_result out
 expect 1 'bz2_message_data_beyond_chunk\.bag: not a readable bag: chunk at byte 4117: record at byte 2255: data length 200000, but only 8591 bytes follow' doorplate_map_bag bz2_message_data_beyond_chunk.bag --out-dir out
+begin map_bag_index_count_beyond_its_data index_count_one_more.bag; earlier_result out
+expect 1 'index_count_one_more\.bag: not a readable bag: record at byte 15058: index data: count 2 \(2 × 12 bytes\), but its data has 12 bytes' doorplate_map_bag index_count_one_more.bag --out-dir out
 begin map_bag_missing_bag
 expect 1 'no_such\.bag' doorplate_map_bag no_such.bag --out-dir out
 begin map_bag_out_over_its_bag garbage.bag; mkdir out; mv garbage.bag out/map.pgm

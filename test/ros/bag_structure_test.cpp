@@ -215,6 +215,66 @@ TEST(CheckBagStructureTest, RefusesACompressedChunkWhoseDataDoesNotDecompressToI
   EXPECT_NE(CheckBagStructure(path).find(expected), std::string::npos) << CheckBagStructure(path);
 }
 
+// A fuzzing find (bag_reader, seeds 21-22 of 2026-12-06): rosbag reads as many index entries (and chunk info
+// entries) as the record's count says, whatever its data length; a count that disagrees leaves it reading the
+// next record from inside this one (a 2.3 GB "header" in readConnectionIndexRecord200).
+TEST(CheckBagStructureTest, RefusesAnIndexOrChunkInfoCountThatDisagreesWithItsData) {
+  for (const std::string& record : {std::string("index data"), std::string("chunk info")}) {
+    const std::string path = GoodBag("count", rosbag::compression::Uncompressed);
+    std::string bytes = ReadAll(path);
+    const std::size_t at = RecordWithOp(bytes, record == "index data" ? '\x04' : '\x06');
+    ASSERT_NE(at, std::string::npos);
+    const std::string count_field = std::string("\x0a\x00\x00\x00", 4) + "count=";  // length 10
+    const std::size_t count_field_at = bytes.find(count_field, at);
+    ASSERT_LT(count_field_at, at + 4 + U32(bytes, at));
+    const std::size_t count_at = count_field_at + count_field.size();
+    std::uint32_t count = U32(bytes, count_at);
+    count += 1;
+    std::memcpy(bytes.data() + count_at, &count, 4);
+    WriteAll(path, bytes);
+    const std::string expected = "record at byte " + std::to_string(at) + ": " + record + ": count " +
+                                 std::to_string(count) + " (";
+    EXPECT_NE(CheckBagStructure(path).find(expected), std::string::npos) << CheckBagStructure(path);
+  }
+}
+
+// rosbag reads a message at each index entry's offset in the chunk's buffer without checking what is there.
+TEST(CheckBagStructureTest, RefusesAnIndexEntryThatIsNotWhereAMessageRecordStarts) {
+  const std::string path = GoodBag("entry", rosbag::compression::Uncompressed);
+  std::string bytes = ReadAll(path);
+  const std::size_t index = RecordWithOp(bytes, '\x04');
+  ASSERT_NE(index, std::string::npos);
+  const std::size_t data_at = index + 4 + U32(bytes, index) + 4;
+  const std::uint32_t inside_a_record = U32(bytes, data_at + 8) + 3;  // the first entry's offset, 3 bytes on
+  std::memcpy(bytes.data() + data_at + 8, &inside_a_record, 4);
+  WriteAll(path, bytes);
+  EXPECT_NE(CheckBagStructure(path).find("index entry offset " + std::to_string(inside_a_record) +
+                                         " is not the start of a message record in its chunk"),
+            std::string::npos) << CheckBagStructure(path);
+}
+
+// rosbag reads an op field, like every numeric field, from the first bytes of a longer value: "op=\x05xy" is a chunk.
+TEST(CheckBagStructureTest, ReadsFieldsAsRosbagDoesFromTheFirstBytesOfALongerValue) {
+  const std::string path = GoodBag("long_op", rosbag::compression::Uncompressed);
+  const std::string bytes = ReadAll(path);
+  const std::size_t chunk = RecordWithOp(bytes, '\x05');
+  ASSERT_NE(chunk, std::string::npos);
+  // Rebuilt with "op=\x05" as "op=\x05xy" (2 bytes longer) and its first inner record's header length huge.
+  const std::string op_field = std::string("\x04\x00\x00\x00op=\x05", 8);
+  const std::size_t op_at = bytes.find(op_field, chunk);
+  ASSERT_LT(op_at, chunk + 4 + U32(bytes, chunk));
+  std::string changed = bytes.substr(0, op_at) + std::string("\x06\x00\x00\x00op=\x05xy", 10) +
+                        bytes.substr(op_at + op_field.size());
+  const std::uint32_t header_length = U32(bytes, chunk) + 2;
+  std::memcpy(changed.data() + chunk, &header_length, 4);
+  const std::size_t records_at = chunk + 4 + header_length + 4;
+  const std::uint32_t huge = 1u << 30;
+  std::memcpy(changed.data() + records_at, &huge, 4);
+  WriteAll(path, changed);
+  EXPECT_NE(CheckBagStructure(path).find("chunk at byte " + std::to_string(chunk) + ": record at byte 0: header length 1073741824"),
+            std::string::npos) << CheckBagStructure(path);
+}
+
 TEST(CheckBagStructureTest, RefusesACompressedChunkClaimingMoreThanTheLimit) {
   const std::string path = GoodBag("big_chunk", rosbag::compression::BZ2);
   std::string bytes = ReadAll(path);

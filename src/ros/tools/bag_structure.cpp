@@ -17,7 +17,8 @@ namespace doorplate_localization {
 namespace {
 
 constexpr std::size_t kBagVersionLineMaxBytes = 1023;  // rosbag's fgets buffer of 1024, less the NUL
-constexpr char kOpBagHeader = 0x03, kOpChunk = 0x05, kOpConnection = 0x07, kOpIndexData = 0x04, kOpChunkInfo = 0x06;
+constexpr char kOpMessageData = 0x02, kOpBagHeader = 0x03, kOpIndexData = 0x04, kOpChunk = 0x05, kOpChunkInfo = 0x06,
+               kOpConnection = 0x07;
 
 template <typename T>
 T Read(const std::string& bytes, std::size_t at) {
@@ -45,8 +46,7 @@ std::string ParseFields(const std::string& header, std::map<std::string, std::st
 
 // A compressed chunk's records as rosbag decompresses them (bz2: libbz2, lz4: roslz4; rosbag then reads
 // their headers from the buffer without checking their lengths): the `size` bytes, or unset with `problem`
-// set when the data does not decompress to exactly that many. Unset without a problem: a compression rosbag
-// does not know (it refuses the bag itself).
+// set when the data does not decompress to exactly that many or the compression is none rosbag knows.
 std::optional<std::string> Decompressed(const std::string& compression, std::string data, std::uint32_t size,
                                         std::string* problem) {
   std::string out(size, '\0');
@@ -62,7 +62,7 @@ std::optional<std::string> Decompressed(const std::string& compression, std::str
       *problem = "its lz4 data does not decompress (roslz4 error " + std::to_string(status) + ")";
     }
   } else {
-    return std::nullopt;
+    *problem = "compression '" + compression + "', not one rosbag reads (none, bz2, lz4)";
   }
   if (problem->empty() && out_size != size) {
     *problem = "its " + compression + " data decompresses to " + std::to_string(out_size) + " bytes, not its size " +
@@ -72,9 +72,19 @@ std::optional<std::string> Decompressed(const std::string& compression, std::str
   return out;
 }
 
+// A numeric field as rosbag reads it (Bag::readField): the first sizeof(T) bytes of a value at least that long
+// (a longer value is accepted, its rest ignored); unset if missing or shorter (rosbag refuses the bag).
+template <typename T>
+std::optional<T> FieldAs(const std::map<std::string, std::string>& fields, const char* name) {
+  const auto it = fields.find(name);
+  if (it == fields.end() || it->second.size() < sizeof(T)) return std::nullopt;
+  return Read<T>(it->second, 0);
+}
+
 struct Chunk {
   std::uint64_t start = 0;  // offset of its record
   std::uint32_t size = 0;   // uncompressed bytes
+  std::set<std::uint64_t> message_starts;  // offsets of its message data records (unset: not walked)
 };
 
 // Bytes [from, from + n) of what is walked (the file, or an uncompressed chunk's data); n is within its size.
@@ -83,7 +93,7 @@ using ReadBytes = std::function<std::string(std::uint64_t from, std::uint32_t n)
 // What the walk of one sequence of records found (top level: the file; inside: one uncompressed chunk).
 struct Walk {
   std::uint64_t index_pos = 0;
-  std::set<std::uint64_t> record_starts, chunk_positions;
+  std::set<std::uint64_t> record_starts, chunk_positions, message_starts;
   std::vector<Chunk> chunks;
 };
 
@@ -111,20 +121,17 @@ std::string WalkRecords(const ReadBytes& read, std::uint64_t begin, std::uint64_
       problem << "data length " << data_length << ", but only " << end - data_at - 4 << " bytes follow";
       return problem.str();
     }
-    const std::string op = fields["op"];
-    const char code = op.size() == 1 ? op[0] : 0;
-    const auto field_u64 = [&fields](const char* name) {
-      const std::string& v = fields[name];
-      return v.size() == 8 ? Read<std::uint64_t>(v, 0) : v.size() == 4 ? Read<std::uint32_t>(v, 0) : ~0ull;
-    };
+    // rosbag takes the first byte of an op field of any length (readField<uint8_t>).
+    const char code = fields["op"].empty() ? 0 : fields["op"][0];
+    if (code == kOpMessageData) walk->message_starts.insert(at);
     if (code == kOpBagHeader) {
-      walk->index_pos = field_u64("index_pos");
+      walk->index_pos = FieldAs<std::uint64_t>(fields, "index_pos").value_or(~0ull);
     } else if (code == kOpConnection) {  // its data is the connection header, fields as well
       std::map<std::string, std::string> connection;
       fields_problem = ParseFields(read(data_at + 4, data_length), &connection);
       if (!fields_problem.empty()) return problem.str() + "connection header: " + fields_problem;
     } else if (code == kOpChunk) {
-      const std::uint64_t size = field_u64("size");
+      const std::uint64_t size = FieldAs<std::uint32_t>(fields, "size").value_or(~0u);
       const bool compressed = fields["compression"] != "none";
       if (size > kMaxBagChunkBytes || (!compressed && size > data_length)) {
         problem << "chunk of " << size << " bytes uncompressed, more than "
@@ -132,32 +139,46 @@ std::string WalkRecords(const ReadBytes& read, std::uint64_t begin, std::uint64_
                                : "its " + std::to_string(data_length) + " bytes of data");
         return problem.str();
       }
-      walk->chunks.push_back({at, static_cast<std::uint32_t>(size)});
+      walk->chunks.push_back({at, static_cast<std::uint32_t>(size), {}});
       // Its records (connections, messages): rosbag parses their headers too.
-      std::optional<std::string> records =
-          read(data_at + 4, compressed ? data_length : static_cast<std::uint32_t>(size));
+      std::string records = read(data_at + 4, compressed ? data_length : static_cast<std::uint32_t>(size));
       if (compressed) {
         std::string decompress_problem;
-        records = Decompressed(fields["compression"], std::move(*records), static_cast<std::uint32_t>(size),
-                               &decompress_problem);
-        if (!decompress_problem.empty()) return problem.str() + "chunk: " + decompress_problem;
+        std::optional<std::string> decompressed =
+            Decompressed(fields["compression"], std::move(records), static_cast<std::uint32_t>(size), &decompress_problem);
+        if (!decompressed) return problem.str() + "chunk: " + decompress_problem;
+        records = std::move(*decompressed);
       }
-      if (records) {
-        const std::string& data = *records;
-        Walk inside;
-        const std::string inner = WalkRecords([&data](std::uint64_t from, std::uint32_t n) { return data.substr(from, n); },
-                                              0, data.size(), where + "chunk at byte " + std::to_string(at) + ": ", &inside);
-        if (!inner.empty()) return inner;
+      Walk inside;
+      const std::string inner = WalkRecords([&records](std::uint64_t from, std::uint32_t n) { return records.substr(from, n); },
+                                            0, records.size(), where + "chunk at byte " + std::to_string(at) + ": ", &inside);
+      if (!inner.empty()) return inner;
+      walk->chunks.back().message_starts = std::move(inside.message_starts);
+    } else if (code == kOpChunkInfo || code == kOpIndexData) {
+      // rosbag reads `count` entries (chunk info: connection id and count, 8 bytes; index data, version 1: time
+      // and offset, 12 bytes) whatever the data length says: a count that disagrees with it leaves rosbag reading
+      // the next record from the wrong place (a fuzzing find: a 2.3 GB "header" in readConnectionIndexRecord200).
+      const std::uint64_t count = FieldAs<std::uint32_t>(fields, "count").value_or(0);
+      const std::uint64_t entry_bytes = code == kOpChunkInfo ? 8 : 12;
+      if (count * entry_bytes != data_length) {
+        problem << (code == kOpChunkInfo ? "chunk info" : "index data") << ": count " << count << " (" << count
+                << " × " << entry_bytes << " bytes), but its data has " << data_length << " bytes";
+        return problem.str();
       }
-    } else if (code == kOpChunkInfo) {
-      walk->chunk_positions.insert(field_u64("chunk_pos"));
-    } else if (code == kOpIndexData && !walk->chunks.empty()) {
-      const std::string data = read(data_at + 4, data_length);  // (time, offset) pairs: 12 bytes each
-      for (std::size_t e = 0; e + 12 <= data.size(); e += 12) {
-        if (Read<std::uint32_t>(data, e + 8) >= walk->chunks.back().size) {
-          problem << "index entry offset " << Read<std::uint32_t>(data, e + 8) << " beyond its chunk of "
-                  << walk->chunks.back().size << " bytes";
-          return problem.str();
+      if (code == kOpChunkInfo) {
+        walk->chunk_positions.insert(FieldAs<std::uint64_t>(fields, "chunk_pos").value_or(~0ull));
+      } else if (!walk->chunks.empty()) {
+        // rosbag reads a message at each entry's offset in the chunk before it (its records read from a buffer,
+        // their lengths unchecked): each must be where a message data record starts.
+        const Chunk& chunk = walk->chunks.back();
+        const std::string data = read(data_at + 4, data_length);
+        for (std::size_t e = 0; e + 12 <= data.size(); e += 12) {
+          const std::uint32_t offset = Read<std::uint32_t>(data, e + 8);
+          if (!chunk.message_starts.count(offset)) {
+            problem << "index entry offset " << offset << " is not the start of a message record in its chunk of "
+                    << chunk.size << " bytes";
+            return problem.str();
+          }
         }
       }
     }
