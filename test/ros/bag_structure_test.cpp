@@ -112,17 +112,22 @@ TEST(CheckBagStructureTest, WalksFromTheEndOfTheVersionLineAsRosbagReadsItAndRef
   EXPECT_EQ(CheckBagStructure(path), "bag format version 1.2: only 2.0 (every bag since ROS C Turtle, 2010) is read");
 }
 
+// Adds `delta` (modulo 2^64: a negative one too) to every 8-byte position field `name` ("index_pos=",
+// "chunk_pos=") of `bytes`, so the positions follow records that moved.
+void MovePositions(std::string* bytes, const std::string& name, std::uint64_t delta) {
+  for (std::size_t at = bytes->find(name); at != std::string::npos; at = bytes->find(name, at + 1)) {
+    std::uint64_t position = 0;
+    std::memcpy(&position, bytes->data() + at + name.size(), 8);
+    position += delta;
+    std::memcpy(bytes->data() + at + name.size(), &position, 8);
+  }
+}
+
 // `bytes` (a bag) with `spaces` spaces before the version line's newline; the bag header's index position and
 // the chunk infos' chunk positions moved with the records, so only the version line differs.
 std::string WithSpacesInTheVersionLine(std::string bytes, std::uint64_t spaces) {
-  for (const std::string name : {"index_pos=", "chunk_pos="}) {
-    for (std::size_t at = bytes.find(name); at != std::string::npos; at = bytes.find(name, at + 1)) {
-      std::uint64_t position = 0;
-      std::memcpy(&position, bytes.data() + at + name.size(), 8);
-      position += spaces;
-      std::memcpy(bytes.data() + at + name.size(), &position, 8);
-    }
-  }
+  MovePositions(&bytes, "index_pos=", spaces);
+  MovePositions(&bytes, "chunk_pos=", spaces);
   return bytes.insert(12, std::string(spaces, ' '));
 }
 
@@ -175,11 +180,7 @@ std::string WithChunkRecords(const std::string& bytes, const std::function<void(
   std::string out =
       bytes.substr(0, length_at) + std::string(4, '\0') + again + bytes.substr(length_at + 4 + data.size());
   std::memcpy(out.data() + length_at, &again_size, 4);
-  const std::size_t index_pos_at = out.find("index_pos=") + 10;
-  std::uint64_t index_pos = 0;
-  std::memcpy(&index_pos, out.data() + index_pos_at, 8);
-  index_pos = index_pos + again.size() - data.size();
-  std::memcpy(out.data() + index_pos_at, &index_pos, 8);
+  MovePositions(&out, "index_pos=", static_cast<std::uint64_t>(again.size()) - data.size());  // after the chunk
   return out;
 }
 

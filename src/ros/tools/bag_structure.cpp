@@ -82,15 +82,14 @@ std::optional<T> FieldAs(const std::map<std::string, std::string>& fields, const
 }
 
 struct Chunk {
-  std::uint64_t start = 0;  // offset of its record
-  std::uint32_t size = 0;   // uncompressed bytes
-  std::set<std::uint64_t> message_starts;  // offsets of its message data records (unset: not walked)
+  std::uint32_t size = 0;                  // uncompressed bytes
+  std::set<std::uint64_t> message_starts;  // offsets of its message data records
 };
 
-// Bytes [from, from + n) of what is walked (the file, or an uncompressed chunk's data); n is within its size.
+// Bytes [from, from + n) of what is walked (the file, or a chunk's records, decompressed); n is within its size.
 using ReadBytes = std::function<std::string(std::uint64_t from, std::uint32_t n)>;
 
-// What the walk of one sequence of records found (top level: the file; inside: one uncompressed chunk).
+// What the walk of one sequence of records found (top level: the file; inside: one chunk's records).
 struct Walk {
   std::uint64_t index_pos = 0;
   std::set<std::uint64_t> record_starts, chunk_positions, message_starts;
@@ -122,7 +121,8 @@ std::string WalkRecords(const ReadBytes& read, std::uint64_t begin, std::uint64_
       return problem.str();
     }
     // rosbag takes the first byte of an op field of any length (readField<uint8_t>).
-    const char code = fields["op"].empty() ? 0 : fields["op"][0];
+    const std::string& op = fields["op"];
+    const char code = op.empty() ? 0 : op[0];
     if (code == kOpMessageData) walk->message_starts.insert(at);
     if (code == kOpBagHeader) {
       walk->index_pos = FieldAs<std::uint64_t>(fields, "index_pos").value_or(~0ull);
@@ -139,7 +139,7 @@ std::string WalkRecords(const ReadBytes& read, std::uint64_t begin, std::uint64_
                                : "its " + std::to_string(data_length) + " bytes of data");
         return problem.str();
       }
-      walk->chunks.push_back({at, static_cast<std::uint32_t>(size), {}});
+      walk->chunks.push_back({static_cast<std::uint32_t>(size), {}});
       // Its records (connections, messages): rosbag parses their headers too.
       std::string records = read(data_at + 4, compressed ? data_length : static_cast<std::uint32_t>(size));
       if (compressed) {

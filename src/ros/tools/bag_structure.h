@@ -20,9 +20,10 @@ inline constexpr std::uint32_t kMaxBagChunkBytes = 256u << 20;
 // field within its header, a connection record's data fields within its data), every
 // chunk's uncompressed size is within kMaxBagChunkBytes (and within its data when uncompressed; a compressed
 // chunk's data decompresses to exactly that size), every record inside a chunk fits in it, the bag
-// header's index position and every chunk info's chunk position are record starts, and every index entry's
-// offset lies inside its chunk; else the first problem, e.g. "record at byte 4321: header length 2315255808,
-// but only 13880 bytes follow". The records start where rosbag's reading of the version line stops (after
+// header's index position and every chunk info's chunk position are record starts, every index data and chunk
+// info record's `count` matches its data length, and every index entry's offset is where a message record of its
+// chunk starts (fields read as rosbag reads them: the first bytes of a longer value); else the first problem,
+// e.g. "record at byte 4321: header length 2315255808, but only 13880 bytes follow". The records start where rosbag's reading of the version line stops (after
 // the first newline, or after 1023 bytes when the line is longer; "#ROS<name> V<major>.<minor>"); a version
 // other than 2.0 is refused (rosbag's readers of the 1.x formats are not checked here); a file without a
 // version line is left to rosbag ("" returned: it says so).
