@@ -112,6 +112,8 @@ begin map_bag_message_past_its_compressed_chunk bz2_message_data_beyond_chunk.ba
 expect 1 'bz2_message_data_beyond_chunk\.bag: not a readable bag: chunk at byte 4117: record at byte 2255: data length 200000, but only 8591 bytes follow' doorplate_map_bag bz2_message_data_beyond_chunk.bag --out-dir out
 begin map_bag_index_count_beyond_its_data index_count_one_more.bag; earlier_result out
 expect 1 'index_count_one_more\.bag: not a readable bag: record at byte 15058: index data: count 2 \(2 × 12 bytes\), but its data has 12 bytes' doorplate_map_bag index_count_one_more.bag --out-dir out
+begin map_bag_encryptor_plugin_not_installed encryptor_plugin_not_installed.bag; earlier_result out
+expect 1 'encryptor_plugin_not_installed\.bag: not a readable bag: its header names an encryptor plugin that cannot be loaded: .*class nope' doorplate_map_bag encryptor_plugin_not_installed.bag --out-dir out
 begin map_bag_missing_bag
 expect 1 'no_such\.bag' doorplate_map_bag no_such.bag --out-dir out
 begin map_bag_out_over_its_bag garbage.bag; mkdir out; mv garbage.bag out/map.pgm

@@ -138,6 +138,33 @@ TEST(ReadBagTest, NamesTheBagItCannotOpenOrRead) {
   EXPECT_NE(what.find("bag_reader_garbage.bag: not a readable bag: Error reading version line"), std::string::npos) << what;
 }
 
+// A bag header naming an encryptor plugin that is not installed: rosbag's open() lets pluginlib's exception
+// through; the error names the bag and says what its header asks for.
+TEST(ReadBagTest, AHeaderNamingAnEncryptorThatIsNotInstalledIsAnErrorNamingTheBag) {
+  const std::string path = TempBag("encryptor");
+  { rosbag::Bag(path, rosbag::bagmode::Write).write("/scan", ros::Time(1.0), Scan(1.0)); }
+  // The header record (after the 13-byte version line) is padded to 4096 bytes: the field goes into the
+  // header, and as many padding bytes come out of the data.
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string field = "encryptor=nope";
+  const std::string entry = Le32(static_cast<std::uint32_t>(field.size())) + field;
+  std::uint32_t header_length = 0, data_length = 0;
+  std::memcpy(&header_length, &bytes[13], 4);
+  std::memcpy(&data_length, &bytes[17 + header_length], 4);
+  ASSERT_GT(data_length, entry.size());
+  bytes = bytes.substr(0, 13) + Le32(header_length + static_cast<std::uint32_t>(entry.size())) +
+          bytes.substr(17, header_length) + entry + Le32(data_length - static_cast<std::uint32_t>(entry.size())) +
+          bytes.substr(21 + header_length + entry.size());
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+  const std::string what = What([&] { ReadBag(path, {"/scan"}, kIgnore); });
+  EXPECT_NE(what.find("bag_reader_encryptor.bag: not a readable bag: its header names an encryptor plugin that "
+                      "cannot be loaded: "),
+            std::string::npos)
+      << what;
+  EXPECT_NE(what.find("nope"), std::string::npos) << what;
+}
+
 // A scan whose ranges' length prefix says 1000 of the 3 floats there: refused before roscpp reads it.
 TEST(ReadBagTest, AMessageThatDoesNotDeserializeIsAnErrorNamingTheBagTopicAndField) {
   const std::string path = TempBag("overrun");

@@ -5,6 +5,7 @@
 #include <new>
 #include <sstream>
 
+#include <pluginlib/exceptions.hpp>
 #include <ros/exception.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
@@ -35,7 +36,11 @@ void WithBag(const std::string& path, const std::function<void(rosbag::Bag&)>& r
     // Opened after construction: when open() throws, ~Bag still frees the connections read so far (rosbag's
     // constructor that opens leaks them: fuzz/bag_reader_fuzz.cpp, LeakSanitizer).
     rosbag::Bag bag;
-    bag.open(path, rosbag::bagmode::Read);
+    try {
+      bag.open(path, rosbag::bagmode::Read);
+    } catch (const pluginlib::PluginlibException& e) {  // the header's `encryptor` names a plugin not installed
+      throw error(std::string("its header names an encryptor plugin that cannot be loaded: ") + e.what());
+    }
     read(bag);
   } catch (const ros::Exception& e) {  // rosbag::BagException and its kin, ros::serialization's overruns
     throw error(e.what());
