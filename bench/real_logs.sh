@@ -8,6 +8,8 @@
 #        [--work DIR] [--no-doc] [--doc-only] [--method rbpf|slam]   (--doc-only: rewrite the doc from
 #        WORK/results.tsv; --method slam: the full SLAM, filter + back end, as the mapping nodelet runs it;
 #        its results are printed, not written into the doc, whose table is the filter's)
+#        [--set NAME=VALUE ...] (passed to doorplate_map_log, e.g. the structured-building profile of
+#        docs/results/real-logs.md; printed only, like --method slam)
 set -euo pipefail
 repo="$(cd "$(dirname "$0")/.." && pwd)"
 build="$repo/build"
@@ -17,6 +19,7 @@ work=""
 write_doc=1
 run=1
 method=rbpf
+sets=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --logs) logs="$2"; shift 2;;
@@ -25,6 +28,7 @@ while [ $# -gt 0 ]; do
     --no-doc) write_doc=0; shift;;
     --doc-only) run=0; shift;;
     --method) method="$2"; shift 2;;
+    --set) sets+=(--set "$2"); write_doc=0; shift 2;;
     -*) echo "real_logs.sh: unknown option $1" >&2; exit 2;;
     *) build="$1"; shift;;
   esac
@@ -46,7 +50,7 @@ for log in $logs; do
     mkdir -p "$run"
     "$py" "$shared/baselines/noisy_carmen.py" "$shared/data/carmen/$log-corrected.log.gz" "$run/input" --seed "$seed"
     echo "real_logs.sh: $log seed $seed" >&2
-    /usr/bin/time -v -o "$run/time.txt" nice -n 10 "$tool" --method "$method" --log "$run/input.log" --out "$run" --seed "$seed" \
+    /usr/bin/time -v -o "$run/time.txt" nice -n 10 "$tool" --method "$method" "${sets[@]}" --log "$run/input.log" --out "$run" --seed "$seed" \
       2> >(tee "$run/progress.txt" >&2)
     "$py" "$shared/baselines/eval_traj.py" "$run/input.gt" "$run/trajectory.txt" > "$run/eval.json"
     "$py" "$shared/baselines/eval_traj.py" "$run/input.gt" "$run/trajectory_best.txt" > "$run/eval_best.json"

@@ -102,6 +102,8 @@ const TextField kTextFields[] = {
     {"back_end.loop_closure_min_separation", nullptr, [](T& o) { return &o.back_end.loop_closure_min_separation; }},
     {"back_end.loop_closure_max_rms_m", [](T& o) { return &o.back_end.loop_closure_max_rms_m; }},
     {"back_end.sequential_gate_sigmas", [](T& o) { return &o.back_end.sequential_gate_sigmas; }},
+    {"back_end.front_end_history_sigma_m", [](T& o) { return &o.back_end.front_end_history_sigma_m; }},
+    {"back_end.front_end_history_sigma_rad", [](T& o) { return &o.back_end.front_end_history_sigma_rad; }},
     {"back_end.loop_closure_max_tries", nullptr, [](T& o) { return &o.back_end.loop_closure_max_tries; }},
     {"back_end.loop_closures_per_node", nullptr, [](T& o) { return &o.back_end.loop_closures_per_node; }},
     {"back_end.front_end_pinned_neighbours", nullptr, [](T& o) { return &o.back_end.front_end_pinned_neighbours; }},

@@ -77,7 +77,11 @@ bool TextSlam::AddScan(const LaserScan& scan, const Pose2D& odometry_pose, int s
 
 void TextSlam::Solve() {
   if (!options_.back_end.enabled || back_end_.num_nodes() == 0) return;
-  solved_ = back_end_.Optimize();
+  std::vector<Pose2D> history;
+  if (options_.back_end.front_end_history_sigma_m > 0) {
+    for (const TrajectoryPoint& p : slam_.MeanTrajectory()) history.push_back(p.pose);
+  }
+  solved_ = back_end_.Optimize(history);
 }
 
 int TextSlam::nodes_since_solve() const {

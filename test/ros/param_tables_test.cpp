@@ -158,6 +158,18 @@ TEST(ParamTables, TheShippedConfigsLoadWithoutWarnings) {
               extractor.warnings.empty());
 }
 
+// The structured-building profile (loaded after mapping.yaml): known parameters, no warnings, and the
+// settings docs/results/real-logs.md measured.
+TEST(ParamTables, TheStructuredBuildingProfileLoadsTheMeasuredSettings) {
+  const YamlSource profile(kSource + "/config/mapping_structured_building.yaml", "slam_mapping");
+  const SlamMappingNodeOptions m = SlamMappingOptionsFrom(profile);
+  EXPECT_TRUE(profile.warnings.empty());
+  EXPECT_EQ(m.slam.slam.degenerate_min_points, 0.0);
+  EXPECT_EQ(m.slam.back_end.front_end_history_sigma_m, 0.005);
+  EXPECT_EQ(m.slam.back_end.front_end_history_sigma_rad, 0.0025);
+  EXPECT_TRUE(m.slam.back_end.enabled);
+}
+
 TEST(ParamTables, UnsetTextAmclParametersAreAmclsDefaultsOneSourceForLoaderAndDocs) {
   const TextAmclNodeOptions o = TextAmclOptionsFrom(YamlSource(YAML::Load("{}"), "amcl"));
   EXPECT_EQ(o.session.setup.likelihood_field.beams.laser_max_beams, 30);  // amcl's; the core's is 60

@@ -312,6 +312,55 @@ TEST(SlamBackEnd, NodesOnMappedGroundArePlacedByTheirAlignmentWithThePlaceNotByT
 }
 
 // Expects the constructor to throw std::invalid_argument whose message starts with `field`.
+// FeedLongOdometryRun's corridor run (odometry 2% long), the front end's pose at each node the truth and
+// pinned as `pinned` says, solved with edges from a front-end history that puts every node at
+// x = 1 + 0.99 (x_true - 1): the history's own shape, 1% shorter than the truth.
+SlamBackEndResult CorridorRunWithAShortHistory(bool pinned, std::vector<Pose2D>* history) {
+  SlamBackEndOptions options;
+  options.front_end_history_sigma_m = 0.005;
+  options.front_end_history_sigma_rad = 0.0025;
+  SlamBackEnd back_end(options);
+  history->clear();
+  for (double x = 1.0; x <= 39.0 + 1e-9; x += 0.5) {
+    const Pose2D truth{x, 0, 0};
+    const Pose2D odometry{1.0 + 1.02 * (x - 1.0), 0, 0};
+    back_end.AddNode(PointsAt(Corridor40(), truth), odometry, truth, pinned);
+    history->push_back({1.0 + 0.99 * (x - 1.0), 0, 0});
+  }
+  return back_end.Optimize(*history);
+}
+
+TEST(SlamBackEnd, HistoryEdgesHoldConsecutivePinnedNodesToTheFrontEndsTrajectory) {
+  std::vector<Pose2D> history;
+  const SlamBackEndResult pinned = CorridorRunWithAShortHistory(true, &history);
+  ASSERT_EQ(pinned.poses.size(), history.size());
+  // The solve keeps the history's shape (its 37.62 m from the first node to the last), not the scans' 38 m.
+  const double solved_length = pinned.poses.back().x_m - pinned.poses.front().x_m;
+  EXPECT_NEAR(solved_length, history.back().x_m - history.front().x_m, 0.02);
+  // Unpinned nodes (a degenerate front end) take no history edge: the end walls and odometry decide.
+  const SlamBackEndResult unpinned = CorridorRunWithAShortHistory(false, &history);
+  EXPECT_NEAR(unpinned.poses.back().x_m - unpinned.poses.front().x_m, 38.0, 0.15);
+}
+
+TEST(SlamBackEnd, AHistoryWithoutOnePosePerNodeThrows) {
+  SlamBackEndOptions options;
+  options.front_end_history_sigma_m = 0.005;
+  options.front_end_history_sigma_rad = 0.0025;
+  SlamBackEnd back_end(options);
+  back_end.AddNode(PointsAt(test::Room(), {0, 0, 0}), {0, 0, 0}, {0, 0, 0});
+  back_end.AddNode(PointsAt(test::Room(), {0.3, 0, 0}), {0.3, 0, 0}, {0.3, 0, 0});
+  try {
+    back_end.Optimize({{0, 0, 0}});
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("front_end_history has 1 poses for 2 nodes"), std::string::npos) << e.what();
+  }
+  // With the option off the history is not used and need not be given.
+  SlamBackEnd plain{SlamBackEndOptions{}};
+  plain.AddNode(PointsAt(test::Room(), {0, 0, 0}), {0, 0, 0}, {0, 0, 0});
+  EXPECT_NO_THROW(plain.Optimize());
+}
+
 void ExpectThrowNaming(const SlamBackEndOptions& options, const std::string& field) {
   try {
     SlamBackEnd back_end(options);
@@ -386,6 +435,12 @@ TEST(SlamBackEnd, BadOptionsThrowNamingTheField) {
   o = {};
   o.place_max_heading_diff_rad = std::nan("");
   ExpectThrowNaming(o, "SlamBackEndOptions.place_max_heading_diff_rad");
+  o = {};
+  o.front_end_history_sigma_m = -0.01;
+  ExpectThrowNaming(o, "SlamBackEndOptions.front_end_history_sigma_m");
+  o = {};
+  o.front_end_history_sigma_m = 0.005;
+  ExpectThrowNaming(o, "SlamBackEndOptions.front_end_history_sigma_rad");
 }
 
 }  // namespace

@@ -82,6 +82,14 @@ struct SlamBackEndOptions {
   double odometry_min_sigma_m = 0.005;
   double odometry_min_sigma_rad = 0.005;
   double plate_sigma_m = 0.15;
+  // Edges from the front end's history (its posterior mean trajectory at the solve, which carries the loops
+  // the filter closed in its particles' maps): between consecutive pinned nodes (see AddNode), the history's
+  // relative pose with these sigmas (x and y; heading); the scan alignments spanning only pinned nodes are
+  // then left out (the filter matched each of those scans to its whole map, not to one other scan). For
+  // structured buildings, with the front end's degeneracy-aware proposal off (degenerate_min_points 0:
+  // every node pinned): docs/results/real-logs.md. 0: off.
+  double front_end_history_sigma_m = 0.0;
+  double front_end_history_sigma_rad = 0.0;
   // Scan budget on mapped ground (bounds memory over hours of patrol): a place (front-end poses within
   // place_radius_m, heading within place_max_heading_diff_rad) that already holds max_nodes_per_place
   // nodes with scans from earlier visits (at least loop_closure_min_separation nodes back) takes new nodes
@@ -131,7 +139,10 @@ class SlamBackEnd {
   std::optional<int> FullPlaceAnchor(const Pose2D& front_end_pose) const;
 
   // Builds and solves the graph (sequential alignments are computed once per node and kept).
-  SlamBackEndResult Optimize() const;
+  // `front_end_history`: per node, the front end's pose as its trajectory estimate at this moment has it (the
+  // filter's posterior mean, map frame); used with front_end_history_sigma_m > 0, and then it must hold one
+  // pose per node (else std::invalid_argument).
+  SlamBackEndResult Optimize(const std::vector<Pose2D>& front_end_history = {}) const;
   int num_nodes() const { return static_cast<int>(nodes_.size()); }
   // Nodes added without their points (mapped ground), and those of them aligned with their place's node.
   int nodes_on_mapped_ground() const { return nodes_on_mapped_ground_; }
@@ -169,7 +180,7 @@ class SlamBackEnd {
   PoseEdge OdometryEdge(int from, int to) const;
   // The graph without loop closures: nodes at the front end's poses, odometry, sequential alignments and
   // plates (landmark index per plate id into `landmark_of_plate`).
-  PoseGraph BaseGraph(std::map<int, int>* landmark_of_plate) const;
+  PoseGraph BaseGraph(std::map<int, int>* landmark_of_plate, const std::vector<Pose2D>& history) const;
   // Whether some plate was read from two nodes at least loop_closure_min_separation apart in sequence.
   bool PlatesCloseALoop() const;
   // Whether an alignment's result lies within sequential_gate_sigmas of the odometry's relative pose.
