@@ -102,6 +102,9 @@ struct SlamBackEndOptions {
   PoseGraphOptions graph;
 };
 
+// `o` if every field is in range; else throws std::invalid_argument "SlamBackEndOptions.<field>: <rule>".
+const SlamBackEndOptions& ValidatedSlamBackEndOptions(const SlamBackEndOptions& o);
+
 struct SlamBackEndResult {
   std::vector<Pose2D> poses;                // per node, map frame
   std::vector<std::optional<Vec2>> plates;  // per plate id, map frame (unset: never read)
