@@ -22,6 +22,9 @@
 //    added, kept between solves) and its points are dropped, so hours of patrol over the same corridor
 //    add a pose and two edges per scan, not a scan (Cartographer trims its pure-localization
 //    trajectories for the same reason); such nodes take no other alignments;
+//  - optionally (front_end_history_sigma_m > 0; the structured-building profile): between consecutive nodes
+//    the front end pinned, the filter's posterior mean trajectory as a relative-pose edge, in place of the
+//    odometry edge and the scan alignments there;
 //  - doorplates: each reading is the plate's position in its node's frame (bearing and range, σ
 //    `plate_sigma_m`); a plate read twice is a loop closure, and the odometry edges between the nodes
 //    where adjacent plates were read are the paper's inter-plate distances (eq. 13; eq. 14's sum is
