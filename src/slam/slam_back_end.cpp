@@ -150,12 +150,7 @@ PoseGraph SlamBackEnd::BaseGraph(std::map<int, int>* landmark_of_plate, const st
   PoseGraph graph;
   for (const Node& node : nodes_) graph.AddNode(node.front_end);
   const bool use_history = options_.front_end_history_sigma_m > 0;  // Optimize checked the size
-  // pinned_from[j]: the first node of the run of pinned nodes that ends at j (j + 1 if j is not pinned).
-  std::vector<int> pinned_from(num_nodes(), 0);
-  for (int j = 0; j < num_nodes(); ++j) {
-    pinned_from[j] = !nodes_[j].front_end_pinned ? j + 1 : (j > 0 ? pinned_from[j - 1] : 0);
-  }
-  const auto history_edge_at = [&](int j) { return use_history && pinned_from[j] <= j - 1; };  // j-1, j pinned
+  const auto history_edge_at = [this](int j) { return HistoryHolds(j - 1, j); };
   // Odometry between consecutive nodes, except where a history edge holds them: the filter's trajectory
   // already took the odometry in, and its systematic errors (scale, heading drift), added again along
   // hundreds of edges, would bend the chain (freiburg-079 seed 3: 0.114 m ATE without loop closures,
@@ -176,10 +171,7 @@ PoseGraph SlamBackEnd::BaseGraph(std::map<int, int>* landmark_of_plate, const st
       graph.AddEdge(edge);
     }
   }
-  for (const PoseEdge& edge : sequential_edges_) {
-    if (use_history && pinned_from[edge.to] <= edge.from) continue;  // spans pinned nodes only
-    graph.AddEdge(edge);
-  }
+  for (const PoseEdge& edge : sequential_edges_) graph.AddEdge(edge);  // none where the history holds
   for (const PoseEdge& edge : anchor_edges_) graph.AddEdge(edge);
   landmark_of_plate->clear();
   for (const PlateReading& reading : plates_) {
@@ -196,6 +188,14 @@ PoseGraph SlamBackEnd::BaseGraph(std::map<int, int>* landmark_of_plate, const st
     graph.AddEdge(edge);
   }
   return graph;
+}
+
+bool SlamBackEnd::HistoryHolds(int from, int to) const {
+  if (!(options_.front_end_history_sigma_m > 0)) return false;
+  for (int k = from; k <= to; ++k) {
+    if (!nodes_[k].front_end_pinned) return false;
+  }
+  return true;
 }
 
 bool SlamBackEnd::PlatesCloseALoop() const {
@@ -224,7 +224,7 @@ SlamBackEndResult SlamBackEnd::Optimize(const std::vector<Pose2D>& front_end_his
   for (int j = sequential_done_; j < n; ++j) {
     for (int offset = 1; offset <= options_.max_sequential_offset && j - offset >= 0; offset *= 2) {
       const int i = j - offset;
-      if (!nodes_[i].has_points || !nodes_[j].has_points) continue;
+      if (!nodes_[i].has_points || !nodes_[j].has_points || HistoryHolds(i, j)) continue;
       const Pose2D initial = nodes_[i].odometry.Between(nodes_[j].odometry);
       if (std::hypot(initial.x_m, initial.y_m) > options_.max_alignment_distance_m) continue;
       if (const std::optional<PoseEdge> edge = Align(i, j, initial, false)) sequential_edges_.push_back(*edge);

@@ -187,6 +187,9 @@ class SlamBackEnd {
   // The graph without loop closures: nodes at the front end's poses, odometry, sequential alignments and
   // plates (landmark index per plate id into `landmark_of_plate`).
   PoseGraph BaseGraph(std::map<int, int>* landmark_of_plate, const std::vector<Pose2D>& history) const;
+  // Whether history edges (front_end_history_sigma_m > 0) hold nodes from..to together: all of them pinned.
+  // Such a span takes no odometry edge and no sequential alignment (none is computed).
+  bool HistoryHolds(int from, int to) const;
   // Whether some plate was read from two nodes at least loop_closure_min_separation apart in sequence.
   bool PlatesCloseALoop() const;
   // Whether an alignment's result lies within sequential_gate_sigmas of the odometry's relative pose.
