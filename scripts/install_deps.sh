@@ -21,6 +21,10 @@ DEMO_PKGS=(
   # header-only, the tools' command lines and results files, found by the top CMakeLists.txt, so every build needs them)
   libopencv-dev libtesseract-dev tesseract-ocr-eng libsuitesparse-dev libyaml-cpp-dev libeigen3-dev libgtest-dev
   libcli11-dev nlohmann-json3-dev
+  # an optimised BLAS for CHOLMOD's supernodal factorization (the back end's solves; update-alternatives
+  # selects it over the reference libblas3: 2x faster solves on an hour's patrol, docs/results/back-end-speed.md);
+  # serial: the filter and the nodelets use the other core
+  libopenblas0-serial
 )
 PKGS=(
   "${DEMO_PKGS[@]}" catkin-lint libmrpt-dev

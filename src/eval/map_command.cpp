@@ -1,5 +1,6 @@
 // `doorplate_eval map`: SLAM of one corridor sweep, laser only (rbpf) or with doorplate text (rbpf_text),
 // measured against the world (paper Table II).
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
@@ -22,7 +23,7 @@ struct MapArgs {
   std::string world, method = "rbpf_text", drive = "auto", json, out_dir;
   std::uint64_t seed = 1;
   int particles = 30;
-  double speed_mps = 0.4, max_seconds = 1800, progress_s = 60;
+  double speed_mps = 0.4, max_seconds = 1800, progress_s = 60, map_update_interval_s = 0;
   std::vector<std::string> sets;
 };
 
@@ -38,8 +39,12 @@ void AddMapOptions(CLI::App* map, MapArgs* a) {
       ->check(tools::PositiveNumber());
   map->add_option("--max-seconds", a->max_seconds, "simulated seconds after which an unfinished drive ends the run")
       ->capture_default_str()->check(tools::PositiveNumber());
-  map->add_option("--drive", a->drive, "sweep (one corridor: out and back), explore (a whole floor: FloorExplorer's "
-                  "passes) or auto (explore when the world lists more than one corridor)")->capture_default_str();
+  map->add_option("--drive", a->drive, "sweep (one corridor: out and back), patrol (sweeps until --max-seconds), "
+                  "explore (a whole floor: FloorExplorer's passes) or auto (explore when the world lists more than one "
+                  "corridor)")->capture_default_str();
+  map->add_option("--map-update-interval-s", a->map_update_interval_s, "also solve the back end and rebuild the maps "
+                  "every this many simulated seconds, as the nodelet's ~map_update_interval (each solve's time in the "
+                  "JSON); 0: once, at the end")->capture_default_str()->check(tools::Number(0.0));
   map->add_option("--set", a->sets, "SLAM options NAME=VALUE[,NAME=VALUE...] (names: rbpf_slam_options.h, "
                   "text.<field>; repeatable)")->delimiter(',')->allow_extra_args(false);
   map->add_option("--progress-s", a->progress_s, "a progress line on stderr every this many simulated seconds "
@@ -93,6 +98,14 @@ void PrintDrive(const MapEvalResult& r, MapDrive drive) {
                 c.mapped.length_m, c.truth.length_m, 100.0 * c.length_accuracy, c.mapped.width_m, c.truth.width_m,
                 100.0 * c.width_accuracy);
   }
+  if (drive == MapDrive::kPatrol) std::printf("  patrol: %d sweep(s) done, %.1f m driven\n", r.sweeps_done, r.distance_m);
+  if (r.solves.size() > 1) {  // periodic solves (--map-update-interval-s)
+    const auto slowest = std::max_element(r.solves.begin(), r.solves.end(),
+                                          [](const MapEvalSolve& a, const MapEvalSolve& b) { return a.wall_s < b.wall_s; });
+    std::printf("  back end: %zu solves; slowest %.2f s wall at %d nodes (sim %.0f s); last %.2f s at %d nodes\n",
+                r.solves.size(), slowest->wall_s, slowest->nodes, slowest->sim_time_s, r.solves.back().wall_s,
+                r.solves.back().nodes);
+  }
   if (drive != MapDrive::kExplore) return;
   std::printf("  explore: %.1f m driven, %zu pass(es) ended:", r.distance_m, r.pass_ends.size());
   for (std::size_t i = 0; i < r.pass_ends.size(); ++i) {
@@ -120,6 +133,7 @@ int RunMap(const MapArgs& a, const std::string& command_line) {
   options.slam.slam.num_particles = a.particles;
   options.speed_mps = a.speed_mps;
   options.max_time_s = a.max_seconds;
+  options.map_update_interval_s = a.map_update_interval_s;
   for (const std::string& set : a.sets) {
     if (set.empty()) continue;
     tools::ApplySetOption(set, [&](const std::string& name, double v) { SetTextSlamOption(name, v, &options.slam); });

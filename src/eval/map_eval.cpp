@@ -38,6 +38,22 @@ void NotePassEnd(const FloorExplorer& explorer, MapEvalResult* result) {
   result->pass_end_scans.push_back(std::max(0, result->scans_processed - 1));
 }
 
+// Records the solve the session just made (MappingSessionCounters::last_solve_wall_s: the solve and the
+// maps' rebuild).
+void NoteSolve(const MappingSession& session, double sim_time_s, MapEvalResult* result) {
+  MapEvalSolve solve;
+  solve.sim_time_s = sim_time_s;
+  solve.wall_s = session.counters().last_solve_wall_s;
+  if (const std::optional<SlamBackEndResult>& back_end = session.BackEndResult()) {
+    solve.nodes = static_cast<int>(back_end->poses.size());
+    solve.nodes_on_mapped_ground = back_end->nodes_on_mapped_ground;
+    solve.loop_closures = back_end->loop_closures;
+    solve.loop_alignments_computed = back_end->loop_alignments_computed;
+    solve.loop_alignments_reused = back_end->loop_alignments_reused;
+  }
+  result->solves.push_back(solve);
+}
+
 }  // namespace
 
 const char* MapMethodName(MapMethod method) { return method == MapMethod::kRbpf ? "rbpf" : "rbpf_text"; }
@@ -48,17 +64,28 @@ MapMethod ParseMapMethod(const std::string& name) {
   throw std::invalid_argument("map method '" + name + "' must be rbpf or rbpf_text");
 }
 
-const char* MapDriveName(MapDrive drive) { return drive == MapDrive::kSweep ? "sweep" : "explore"; }
+const char* MapDriveName(MapDrive drive) {
+  switch (drive) {
+    case MapDrive::kSweep: return "sweep";
+    case MapDrive::kPatrol: return "patrol";
+    case MapDrive::kExplore: return "explore";
+  }
+  return "?";
+}
 
 MapDrive ParseMapDrive(const std::string& name) {
   if (name == "sweep") return MapDrive::kSweep;
+  if (name == "patrol") return MapDrive::kPatrol;
   if (name == "explore") return MapDrive::kExplore;
-  throw std::invalid_argument("drive '" + name + "' must be sweep or explore");
+  throw std::invalid_argument("drive '" + name + "' must be sweep, patrol or explore");
 }
 
 MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
   if (!(options.speed_mps > 0) || !(options.max_time_s > 0)) {
     throw std::invalid_argument("MapEvalOptions: speed_mps and max_time_s must be > 0");
+  }
+  if (!(options.map_update_interval_s >= 0)) {
+    throw std::invalid_argument("MapEvalOptions: map_update_interval_s must be >= 0");
   }
   const auto start = std::chrono::steady_clock::now();
   MapEvalResult result;
@@ -67,8 +94,12 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
   sim_options.seed = PassSeed(options.seed, 0);
   Simulator sim(world, sim_options);
   const World& sim_world = sim.world();
-  MappingSessionOptions session_options;  // every scan to the filter; the back end solved once, at the end
+  // Every scan to the filter; the back end solved at the end, and with map_update_interval_s > 0 also every
+  // that many simulated seconds, as the nodelet's ~map_update_interval (without its wall-clock share, so
+  // deterministic).
+  MappingSessionOptions session_options;
   session_options.slam = options.slam;
+  session_options.map_update_interval_s = options.map_update_interval_s;
   session_options.slam.slam.seed = PassSeed(options.seed, 1);
   MappingSession session(session_options);
   CorridorSweepOptions sweep_options = options.sweep;
@@ -114,6 +145,7 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
       const double t0 = ThreadCpuSeconds();
       const MappingUpdate update = session.AddScan(sim.time_s(), sim.odom_pose(), scan);
       for (const MappingPlateOutcome& o : update.plates) result.plate_reports_used += o.result.used();  // held ones
+      if (update.solved) NoteSolve(session, sim.time_s(), &result);
       if (update.scan_processed) {
         ++result.scans_processed;
         result.true_trajectory.push_back(result.world_from_map.Inverse().Compose(sim.true_pose()));
@@ -127,7 +159,11 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
         if (explorer.phase() == ExplorePhase::kDone) break;
       } else {
         cmd = sweep.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, sim.odom_pose(), sim.time_s());
-        if (sweep.phase() == SweepPhase::kDone) break;
+        if (sweep.phase() == SweepPhase::kDone) {
+          ++result.sweeps_done;
+          if (options.drive != MapDrive::kPatrol) break;
+          sweep.Reset();  // patrol: out and back again until max_time_s, as the wall follower's ~mode patrol
+        }
       }
       sim.SetCommand(cmd.linear_mps, cmd.angular_rps);
     }
@@ -155,7 +191,9 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
     sim.Step();
   }
   progress.Finish();
-  result.sweep_done = explore ? explorer.phase() == ExplorePhase::kDone : sweep.phase() == SweepPhase::kDone;
+  result.sweep_done = explore                                ? explorer.phase() == ExplorePhase::kDone
+                      : options.drive == MapDrive::kPatrol ? result.sweeps_done > 0
+                                                           : sweep.phase() == SweepPhase::kDone;
   result.distance_m = sim.distance_travelled_m();
   result.sim_seconds = sim.time_s();
   for (const MappingPlateOutcome& o : session.Flush().plates) result.plate_reports_used += o.result.used();  // held
@@ -166,6 +204,7 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
   const double map_t0 = ThreadCpuSeconds();
   session.Solve();
   result.map_build_seconds = ThreadCpuSeconds() - map_t0;
+  NoteSolve(session, sim.time_s(), &result);
   result.grid = *session.Map();
   result.text_map = session.GetTextMap();
   result.trajectory = session.Trajectory();

@@ -29,8 +29,10 @@ enum class MapMethod { kRbpf, kRbpfText };
 const char* MapMethodName(MapMethod method);
 MapMethod ParseMapMethod(const std::string& name);
 
-enum class MapDrive { kSweep, kExplore };
-// "sweep" / "explore"; ParseMapDrive throws std::invalid_argument for anything else.
+// kSweep: one corridor out and back, then the run ends; kPatrol: the same again and again until max_time_s
+// (the wall follower's ~mode patrol: a long run over mapped ground); kExplore: FloorExplorer's passes.
+enum class MapDrive { kSweep, kPatrol, kExplore };
+// "sweep" / "patrol" / "explore"; ParseMapDrive throws std::invalid_argument for anything else.
 const char* MapDriveName(MapDrive drive);
 MapDrive ParseMapDrive(const std::string& name);
 
@@ -47,11 +49,27 @@ struct MapEvalOptions {
   MapDrive drive = MapDrive::kSweep;
   CorridorSweepOptions sweep;        // drive kSweep (cruise speed from speed_mps)
   FloorExplorerOptions explore;      // drive kExplore (cruise speed from speed_mps)
+  // > 0: the session also solves the back end every this many simulated seconds (MappingSessionOptions::
+  // map_update_interval_s, the nodelet's ~map_update_interval); each solve is recorded in `solves`.
+  double map_update_interval_s = 0.0;
+};
+
+// One back-end solve of the run (the periodic ones and the final one).
+struct MapEvalSolve {
+  double sim_time_s = 0.0;
+  double wall_s = 0.0;               // wall clock of MappingSession::Solve (solve + maps rebuilt)
+  int nodes = 0;                     // back-end nodes (0: back end off)
+  int nodes_on_mapped_ground = 0;    // of them, kept without their scan
+  int loop_closures = 0;             // in the solved graph
+  int loop_alignments_computed = 0;  // loop-closure alignments run (SlamBackEndResult)
+  int loop_alignments_reused = 0;    // ... taken from the previous solve (same nodes and guess)
 };
 
 struct MapEvalResult {
   std::string world_name;
-  bool sweep_done = false;           // the drive ended by itself (sweep: done; explore: every pass ended)
+  bool sweep_done = false;           // the drive ended by itself (sweep: done; explore: every pass ended;
+                                     // patrol: at least one sweep done)
+  int sweeps_done = 0;               // sweep / patrol: out-and-back sweeps completed
   std::vector<int> pass_end_scans;   // explore: processed-scan index at which each pass ended
   std::vector<std::string> pass_ends;  // explore: why each pass ended (PassEndName)
   // explore: position error of the mapped trajectory at each pass end (the start aligned): where a
@@ -86,6 +104,7 @@ struct MapEvalResult {
   int loop_closures = 0;             // back end's scan-alignment loop closures (in the final graph)
   int loop_closures_dropped = 0;     // ... dropped by its consistency check
   int nodes_on_mapped_ground = 0;    // back-end nodes added without their scan (max_nodes_per_place)
+  std::vector<MapEvalSolve> solves;  // every solve, in order (the last: the final maps')
   OccupancyGrid grid;
   TextMap text_map;                  // empty landmarks for method rbpf
   std::vector<Pose2D> trajectory;    // TextSlam::Trajectory(): back end poses (else best particle's), map frame

@@ -30,6 +30,7 @@ Json MapEvalJson(const MapEvalResult& r, const MapEvalRunInfo& info) {
   j["particles"] = info.particles;
   j["drive"] = MapDriveName(info.drive);
   j["sweep_done"] = r.sweep_done;
+  j["sweeps_done"] = r.sweeps_done;
   j["distance_m"] = r.distance_m;
   j["pass_ends"] = Json::array();
   for (std::size_t i = 0; i < r.pass_ends.size(); ++i) {
@@ -71,6 +72,16 @@ Json MapEvalJson(const MapEvalResult& r, const MapEvalRunInfo& info) {
   j["sim_seconds"] = r.sim_seconds;
   j["slam_seconds"] = r.slam_seconds;
   j["map_build_seconds"] = r.map_build_seconds;
+  j["solves"] = Json::array();
+  for (const MapEvalSolve& s : r.solves) {
+    j["solves"].push_back({{"sim_time_s", s.sim_time_s},
+                           {"wall_s", s.wall_s},
+                           {"nodes", s.nodes},
+                           {"nodes_on_mapped_ground", s.nodes_on_mapped_ground},
+                           {"loop_closures", s.loop_closures},
+                           {"loop_alignments_computed", s.loop_alignments_computed},
+                           {"loop_alignments_reused", s.loop_alignments_reused}});
+  }
   j["scans"] = r.scans;
   j["scans_processed"] = r.scans_processed;
   j["degenerate_scans"] = r.degenerate_scans;

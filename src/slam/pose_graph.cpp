@@ -63,6 +63,16 @@ PoseResidual Evaluate(const PoseEdge& edge, const Pose2D& a, const Pose2D& b, do
   return r;
 }
 
+// Whether the step `delta` (3 per node: x, y, θ; 2 per landmark; then the scale and the drift) moves every
+// position below options.min_step_m and every angle, the scale and the drift below options.min_step_rad.
+bool StepIsBelow(const Eigen::VectorXd& delta, int nodes, int landmarks, const PoseGraphOptions& options) {
+  for (int k = 0; k < delta.size(); ++k) {
+    const bool position = k < 3 * nodes ? k % 3 != 2 : k < 3 * nodes + 2 * landmarks;
+    if (std::abs(delta(k)) >= (position ? options.min_step_m : options.min_step_rad)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 int PoseGraph::AddNode(const Pose2D& initial_estimate) {
@@ -238,7 +248,7 @@ PoseGraphSummary PoseGraph::Optimize(const PoseGraphOptions& options) {
       break;
     }
     summary.final_cost = cost;
-    if (step * delta.cwiseAbs().maxCoeff() < options.min_step) break;
+    if (StepIsBelow(step * delta, num_nodes(), num_landmarks(), options)) break;
   }
   return summary;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -131,18 +132,29 @@ PoseEdge SlamBackEnd::OdometryEdge(int from, int to) const {
 }
 
 std::optional<PoseEdge> SlamBackEnd::Align(int from, int to, const Pose2D& initial, bool loop_closure,
-                                           bool* degenerate) const {
+                                           bool* degenerate, SlamBackEndResult* count) const {
+  const AlignmentKey key{from, to, initial.x_m, initial.y_m, initial.theta_rad};
+  if (loop_closure) {
+    if (auto it = loop_alignments_.find(key); it != loop_alignments_.end()) {
+      it->second.used_in_solve = solves_;
+      if (count) ++count->loop_alignments_reused;
+      if (degenerate) *degenerate = it->second.degenerate;
+      return it->second.edge;
+    }
+  }
   const ScanIcpResult r = AlignScans(Reference(from), nodes_[to].points, initial, options_.icp);
   if (degenerate) *degenerate = r.degenerate;
-  if (!r.aligned) return std::nullopt;
-  if (loop_closure && r.rms_m > options_.loop_closure_max_rms_m) return std::nullopt;
-  if (!loop_closure && !AgreesWithOdometry(initial, r.relative)) return std::nullopt;
-  PoseEdge edge;
-  edge.from = from;
-  edge.to = to;
-  edge.measurement = r.relative;
-  edge.information = r.information;
-  edge.robust = loop_closure;
+  std::optional<PoseEdge> edge;
+  if (r.aligned && (loop_closure ? r.rms_m <= options_.loop_closure_max_rms_m : AgreesWithOdometry(initial, r.relative))) {
+    edge.emplace();
+    edge->from = from;
+    edge->to = to;
+    edge->measurement = r.relative;
+    edge->information = r.information;
+    edge->robust = loop_closure;
+  }
+  if (loop_closure) loop_alignments_[key] = {edge, r.degenerate, solves_};
+  if (loop_closure && count) ++count->loop_alignments_computed;
   return edge;
 }
 
@@ -215,6 +227,7 @@ SlamBackEndResult SlamBackEnd::Optimize(const std::vector<Pose2D>& front_end_his
   SlamBackEndResult result;
   const int n = num_nodes();
   if (n == 0) return result;
+  ++solves_;
   if (options_.front_end_history_sigma_m > 0 && static_cast<int>(front_end_history.size()) != n) {
     throw std::invalid_argument("SlamBackEnd::Optimize: front_end_history has " +
                                 std::to_string(front_end_history.size()) + " poses for " + std::to_string(n) +
@@ -273,7 +286,8 @@ SlamBackEndResult SlamBackEnd::Optimize(const std::vector<Pose2D>& front_end_his
         if (only_pinned && !(trusted[i] && trusted[j])) continue;
         if (!closed.insert({i, j}).second) continue;
         bool degenerate = false;
-        if (const std::optional<PoseEdge> edge = Align(i, j, pose_of(i).Between(pose_of(j)), true, &degenerate)) {
+        if (const std::optional<PoseEdge> edge =
+                Align(i, j, pose_of(i).Between(pose_of(j)), true, &degenerate, &result)) {
           graph.AddEdge(*edge);
           loops.push_back(*edge);
           if (degenerate) kept_a_guess.insert({i, j});
@@ -345,7 +359,8 @@ SlamBackEndResult SlamBackEnd::Optimize(const std::vector<Pose2D>& front_end_his
       if (!kept_a_guess.count({edge.from, edge.to})) {
         realigned.push_back(edge);
       } else if (const std::optional<PoseEdge> again =
-                     Align(edge.from, edge.to, graph.node(edge.from).Between(graph.node(edge.to)), true)) {
+                     Align(edge.from, edge.to, graph.node(edge.from).Between(graph.node(edge.to)), true,
+                           nullptr, &result)) {
         realigned.push_back(*again);
       }
     }
@@ -353,6 +368,9 @@ SlamBackEndResult SlamBackEnd::Optimize(const std::vector<Pose2D>& front_end_his
     check_loops();
   }
   result.loop_closures = static_cast<int>(loops.size());
+  for (auto it = loop_alignments_.begin(); it != loop_alignments_.end();) {
+    it = it->second.used_in_solve == solves_ ? std::next(it) : loop_alignments_.erase(it);
+  }
 
   for (int i = 0; i < n; ++i) result.poses.push_back(graph.node(i));
   for (const auto& [plate_id, landmark] : landmark_of_plate) {

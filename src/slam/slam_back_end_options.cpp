@@ -41,6 +41,8 @@ const SlamBackEndOptions& ValidatedSlamBackEndOptions(const SlamBackEndOptions& 
     fail("icp.degenerate_min_fraction: must be in [0, 1)");
   }
   if (!(o.graph.scale_prior_sigma > 0)) fail("graph.scale_prior_sigma: must be > 0");
+  if (o.graph.max_iterations < 1) fail("graph.max_iterations: must be >= 1");
+  if (!(o.graph.min_step_m > 0) || !(o.graph.min_step_rad > 0)) fail("graph.min_step_m, min_step_rad: must be > 0");
   if (!(o.graph.heading_drift_prior_sigma_rad_per_m > 0)) fail("graph.heading_drift_prior_sigma_rad_per_m: must be > 0");
   return o;
 }

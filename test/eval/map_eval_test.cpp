@@ -1,4 +1,5 @@
-// Smoke test of the mapping experiment: one sweep of a tiny corridor with the real text extractor.
+// Smoke test of the mapping experiment: sweeps of a tiny corridor with the real text extractor, a patrol
+// with periodic solves, an exploration of a tiny L.
 #include "map_eval.h"
 
 #include <gtest/gtest.h>
@@ -94,8 +95,30 @@ TEST(MapEval, ExploreDrivesBothLegsOfAnLReadsEveryPlateAndMeasuresEachCorridor) 
   EXPECT_LT(r.pass_end_errors_m[0], 0.3);
 }
 
+TEST(MapEval, APatrolSweepsUntilTheTimeIsUpAndRecordsEveryPeriodicSolve) {
+  MapEvalOptions options = Options(MapMethod::kRbpf);
+  options.slam.back_end.enabled = true;  // laser only, with the back end the periodic solves run
+  options.drive = MapDrive::kPatrol;
+  options.max_time_s = 150.0;
+  options.map_update_interval_s = 30.0;
+  const MapEvalResult r = RunMapEval(TinyCorridor(), options);
+  EXPECT_TRUE(r.sweep_done);
+  EXPECT_GE(r.sweeps_done, 2);
+  EXPECT_NEAR(r.sim_seconds, 150.0, 0.2);
+  // A solve at the first scan, one every ~30 s of scans after it, and the final one.
+  ASSERT_GE(r.solves.size(), 5u);
+  for (std::size_t i = 1; i < r.solves.size(); ++i) {
+    EXPECT_GE(r.solves[i].nodes, r.solves[i - 1].nodes) << "solve " << i;
+    EXPECT_GE(r.solves[i].sim_time_s, r.solves[i - 1].sim_time_s) << "solve " << i;
+  }
+  EXPECT_EQ(r.solves.back().nodes, r.scans_processed);
+  EXPECT_GT(r.loop_closures, 0);  // the second sweep closes on the first
+  EXPECT_GT(r.length_accuracy, 0.98);
+}
+
 TEST(MapEval, DriveNamesRoundTripAndUnknownOnesAreRefused) {
   EXPECT_EQ(ParseMapDrive(MapDriveName(MapDrive::kSweep)), MapDrive::kSweep);
+  EXPECT_EQ(ParseMapDrive(MapDriveName(MapDrive::kPatrol)), MapDrive::kPatrol);
   EXPECT_EQ(ParseMapDrive(MapDriveName(MapDrive::kExplore)), MapDrive::kExplore);
   EXPECT_THROW(ParseMapDrive("frontier"), std::invalid_argument);
 }

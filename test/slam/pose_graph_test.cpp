@@ -58,6 +58,42 @@ TEST(PoseGraph, ASquareLoopWithNoisyStartingPosesConvergesToTheExactPoses) {
   }
 }
 
+// The square of the test above, started off by up to a metre, with every edge robust (the Huber kernel:
+// linear convergence at the end, as on a real graph).
+PoseGraph NoisyRobustSquare() {
+  const std::vector<Pose2D> truth = Square();
+  PoseGraph graph;
+  graph.AddNode(truth[0]);
+  for (std::size_t i = 1; i < truth.size(); ++i) graph.AddNode({truth[i].x_m + 0.5, truth[i].y_m - 0.4, truth[i].theta_rad + 0.3});
+  std::vector<PoseEdge> edges = {ExactEdge(truth, 0, 1), ExactEdge(truth, 1, 2), ExactEdge(truth, 2, 3),
+                                 ExactEdge(truth, 3, 0), ExactEdge(truth, 1, 4), ExactEdge(truth, 4, 3)};
+  edges[3].measurement.x_m += 0.05;  // one inconsistent edge, so the kernel is active at the optimum
+  for (PoseEdge& edge : edges) {
+    edge.robust = true;
+    graph.AddEdge(edge);
+  }
+  return graph;
+}
+
+TEST(PoseGraph, ItStopsOnceAStepMovesNoPositionByMinStepMAndNoAngleByMinStepRad) {
+  PoseGraphOptions huge;  // any first step is below these: one iteration
+  huge.min_step_m = huge.min_step_rad = 1e3;
+  PoseGraph once = NoisyRobustSquare();
+  EXPECT_EQ(once.Optimize(huge).iterations, 1);
+  PoseGraphOptions tiny;  // what the stop used to be (1e-7 for every component)
+  tiny.min_step_m = tiny.min_step_rad = 1e-7;
+  PoseGraph fine = NoisyRobustSquare(), by_default = NoisyRobustSquare();
+  const PoseGraphSummary fine_summary = fine.Optimize(tiny);
+  const PoseGraphSummary default_summary = by_default.Optimize({});
+  EXPECT_LT(default_summary.iterations, fine_summary.iterations);
+  // Stopping at 0.1 mm / 1e-5 rad steps leaves the solution where the fine stop puts it, to well below a cell.
+  for (int i = 0; i < fine.num_nodes(); ++i) {
+    EXPECT_NEAR(by_default.node(i).x_m, fine.node(i).x_m, 1e-4) << "node " << i;
+    EXPECT_NEAR(by_default.node(i).y_m, fine.node(i).y_m, 1e-4) << "node " << i;
+    EXPECT_NEAR(NormalizeAngle(by_default.node(i).theta_rad - fine.node(i).theta_rad), 0.0, 1e-4) << "node " << i;
+  }
+}
+
 TEST(PoseGraph, TheFirstNodeStaysWhereItStartedAndDefinesTheMapFrame) {
   // Every edge is relative: without the first node fixed the whole graph could slide.
   const std::vector<Pose2D> truth = {{3, -1, 0.4}, {4, -1, 0.4}, {5, 0, 1.0}};

@@ -77,6 +77,15 @@ TEST(SlamBackEndOptions, BadOptionsThrowNamingTheField) {
   o.graph.scale_prior_sigma = 0;
   ExpectThrowNaming(o, "SlamBackEndOptions.graph.scale_prior_sigma");
   o = {};
+  o.graph.min_step_m = 0;
+  ExpectThrowNaming(o, "SlamBackEndOptions.graph.min_step_m");
+  o = {};
+  o.graph.min_step_rad = std::nan("");
+  ExpectThrowNaming(o, "SlamBackEndOptions.graph.min_step_m, min_step_rad");
+  o = {};
+  o.graph.max_iterations = 0;
+  ExpectThrowNaming(o, "SlamBackEndOptions.graph.max_iterations");
+  o = {};
   o.max_nodes_per_place = -1;
   ExpectThrowNaming(o, "SlamBackEndOptions.max_nodes_per_place");
   o = {};

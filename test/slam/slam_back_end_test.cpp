@@ -174,8 +174,7 @@ TEST(SlamBackEnd, TheFrontEndsPosesProposeTheLoopClosuresTheOdometryLost) {
 // `return_offset_m` off along the corridor on the way back (-4: a laser-only filter that shrank the
 // corridor puts the robot 4 m nearer the start), so the loop closures it proposes start from a guess that
 // far off, where an alignment cannot tell the places apart and keeps the guess.
-SlamBackEndResult OutAndBackWithTheReturnOffBy(double return_offset_m) {
-  SlamBackEnd back_end{SlamBackEndOptions{}};
+void FeedOutAndBack(double return_offset_m, SlamBackEnd* back_end) {
   std::mt19937 random(7);
   std::normal_distribution<double> noise_m(0.0, 0.02);
   std::vector<Pose2D> truth;
@@ -187,8 +186,13 @@ SlamBackEndResult OutAndBackWithTheReturnOffBy(double return_offset_m) {
     LaserScan scan = test::Scan(Corridor40(), truth[i], kBeams, kMaxRangeM);
     for (float& r : scan.ranges_m) r += static_cast<float>(noise_m(random));
     const double offset_m = i < out_nodes ? 0.0 : return_offset_m;
-    back_end.AddNode(test::Points(scan), truth[i], {truth[i].x_m + offset_m, truth[i].y_m, truth[i].theta_rad});
+    back_end->AddNode(test::Points(scan), truth[i], {truth[i].x_m + offset_m, truth[i].y_m, truth[i].theta_rad});
   }
+}
+
+SlamBackEndResult OutAndBackWithTheReturnOffBy(double return_offset_m) {
+  SlamBackEnd back_end{SlamBackEndOptions{}};
+  FeedOutAndBack(return_offset_m, &back_end);
   return back_end.Optimize();
 }
 
@@ -207,6 +211,24 @@ TEST(SlamBackEnd, LoopClosuresProposedMetresOffAlongACorridorAreMeasuredAgainFro
     EXPECT_NEAR(shrunk.poses[i].x_m, exact.poses[i].x_m, 0.01);
     EXPECT_NEAR(shrunk.poses[i].y_m, exact.poses[i].y_m, 0.01);
     EXPECT_NEAR(NormalizeAngle(shrunk.poses[i].theta_rad - exact.poses[i].theta_rad), 0.0, 0.001);
+  }
+}
+
+TEST(SlamBackEnd, ASecondSolveOfTheSameNodesReusesItsLoopAlignmentsAndGivesTheSameResult) {
+  SlamBackEnd back_end{SlamBackEndOptions{}};
+  FeedOutAndBack(-4.0, &back_end);
+  const SlamBackEndResult first = back_end.Optimize();
+  EXPECT_GT(first.loop_alignments_computed, 20);
+  EXPECT_EQ(first.loop_alignments_reused, 0);
+  const SlamBackEndResult second = back_end.Optimize();  // same nodes: the same guesses, to the bit
+  EXPECT_EQ(second.loop_alignments_computed, 0);
+  EXPECT_EQ(second.loop_alignments_reused, first.loop_alignments_computed);
+  EXPECT_EQ(second.loop_closures, first.loop_closures);
+  ASSERT_EQ(second.poses.size(), first.poses.size());
+  for (size_t i = 0; i < first.poses.size(); ++i) {
+    EXPECT_EQ(second.poses[i].x_m, first.poses[i].x_m) << "node " << i;
+    EXPECT_EQ(second.poses[i].y_m, first.poses[i].y_m) << "node " << i;
+    EXPECT_EQ(second.poses[i].theta_rad, first.poses[i].theta_rad) << "node " << i;
   }
 }
 

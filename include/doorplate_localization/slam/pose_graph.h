@@ -28,7 +28,12 @@ namespace doorplate_localization {
 
 struct PoseGraphOptions {
   int max_iterations = 30;
-  double min_step = 1e-7;           // stop when the largest update component is below this
+  // Stop when a Gauss-Newton step moves no position (node or landmark) by min_step_m or more and no
+  // heading, the odometry scale or the heading drift (rad/m) by min_step_rad or more. The robust (Huber)
+  // edges make the convergence linear, ~4x per iteration near the end; a step of 0.1 mm is far below the
+  // map's 5 cm cells (a 1e-7 stop took twice the iterations for nothing: docs/results/back-end-speed.md).
+  double min_step_m = 1e-4;
+  double min_step_rad = 1e-5;
   double huber_sigmas = 3.0;        // robust edges: Huber kernel beyond this Mahalanobis distance
   double scale_prior_sigma = 0.05;  // odometry scale ~ N(1, σ²) when it is estimated
   bool estimate_odometry_scale = true;

@@ -12,7 +12,8 @@
 //  - loop closures: each node is aligned with the nearest node of earlier visits at least
 //    `loop_closure_min_separation` nodes away within `loop_closure_radius_m` (Huber kernel), proposed
 //    where the front end's poses and where a solve put them (in the order loop_closure_proposal_order
-//    says), afresh at every solve (only the sequential alignments are kept between solves); after each
+//    says), afresh at every solve (an alignment whose nodes and guess are the same to the bit as in the
+//    previous solve is taken from it: the same result, not computed twice); after each
 //    solve, closures the solution misses by more than `loop_closure_max_residual_sigmas` are dropped as
 //    false matches and the graph is solved again; last, every closure whose alignment kept its guess along
 //    a direction the scans do not fix is aligned again from the solution (one that no longer aligns is
@@ -37,6 +38,7 @@
 #include <list>
 #include <map>
 #include <optional>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -120,6 +122,8 @@ struct SlamBackEndResult {
   int plate_readings = 0;
   int nodes_on_mapped_ground = 0;           // nodes added without their scan (max_nodes_per_place)
   int mapped_ground_alignments = 0;         // ... of them aligned with their place's node (in the graph)
+  int loop_alignments_computed = 0;         // loop-closure alignments this solve ran ICP for
+  int loop_alignments_reused = 0;           // ... and took from the previous solve (same nodes and guess)
   PoseGraphSummary summary;                 // of the final solve
 };
 
@@ -195,8 +199,12 @@ class SlamBackEnd {
   // Whether an alignment's result lies within sequential_gate_sigmas of the odometry's relative pose.
   bool AgreesWithOdometry(const Pose2D& odometry, const Pose2D& aligned) const;
   // `degenerate` (if given): whether the alignment kept the guess along a direction the scans do not fix.
+  // Loop-closure alignments are remembered from one solve to the next by their exact inputs (nodes and
+  // guess to the bit: the same inputs give the same result, so nothing changes but the time): the
+  // closures proposed at the front end's poses, which do not move, are aligned once, not at every solve.
+  // `count` (if given): its loop_alignments_computed / _reused is incremented.
   std::optional<PoseEdge> Align(int from, int to, const Pose2D& initial, bool loop_closure,
-                                bool* degenerate = nullptr) const;
+                                bool* degenerate = nullptr, SlamBackEndResult* count = nullptr) const;
 
   const SlamBackEndOptions options_;
   mutable std::vector<Node> nodes_;
@@ -204,6 +212,16 @@ class SlamBackEnd {
   mutable std::vector<PoseEdge> sequential_edges_;  // cached alignments
   mutable int sequential_done_ = 0;                  // nodes whose sequential alignments are cached
   mutable std::list<std::pair<int, IcpReference>> references_;  // most recently used first
+  // Loop-closure alignments by (from, to, guess x, y, θ); an entry not used by the latest Optimize is
+  // dropped at its end (a guess from a solved pose rarely comes again), so it holds one solve's.
+  struct RememberedAlignment {
+    std::optional<PoseEdge> edge;
+    bool degenerate = false;
+    int used_in_solve = 0;
+  };
+  using AlignmentKey = std::tuple<int, int, double, double, double>;
+  mutable std::map<AlignmentKey, RememberedAlignment> loop_alignments_;
+  mutable int solves_ = 0;                           // Optimize calls so far
   std::vector<PoseEdge> anchor_edges_;               // mapped-ground nodes aligned with their place's node
   int nodes_on_mapped_ground_ = 0;
 
