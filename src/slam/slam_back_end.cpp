@@ -132,30 +132,34 @@ PoseEdge SlamBackEnd::OdometryEdge(int from, int to) const {
 }
 
 std::optional<PoseEdge> SlamBackEnd::Align(int from, int to, const Pose2D& initial, bool loop_closure,
-                                           bool* degenerate, SlamBackEndResult* count) const {
-  const AlignmentKey key{from, to, initial.x_m, initial.y_m, initial.theta_rad};
-  if (loop_closure) {
-    if (auto it = loop_alignments_.find(key); it != loop_alignments_.end()) {
-      it->second.used_in_solve = solves_;
-      if (count) ++count->loop_alignments_reused;
-      if (degenerate) *degenerate = it->second.degenerate;
-      return it->second.edge;
-    }
-  }
+                                           bool* degenerate) const {
   const ScanIcpResult r = AlignScans(Reference(from), nodes_[to].points, initial, options_.icp);
   if (degenerate) *degenerate = r.degenerate;
-  std::optional<PoseEdge> edge;
-  if (r.aligned && (loop_closure ? r.rms_m <= options_.loop_closure_max_rms_m : AgreesWithOdometry(initial, r.relative))) {
-    edge.emplace();
-    edge->from = from;
-    edge->to = to;
-    edge->measurement = r.relative;
-    edge->information = r.information;
-    edge->robust = loop_closure;
-  }
-  if (loop_closure) loop_alignments_[key] = {edge, r.degenerate, solves_};
-  if (loop_closure && count) ++count->loop_alignments_computed;
+  if (!r.aligned) return std::nullopt;
+  if (loop_closure && r.rms_m > options_.loop_closure_max_rms_m) return std::nullopt;
+  if (!loop_closure && !AgreesWithOdometry(initial, r.relative)) return std::nullopt;
+  PoseEdge edge;
+  edge.from = from;
+  edge.to = to;
+  edge.measurement = r.relative;
+  edge.information = r.information;
+  edge.robust = loop_closure;
   return edge;
+}
+
+std::optional<PoseEdge> SlamBackEnd::AlignLoopClosure(int from, int to, const Pose2D& initial, bool* degenerate,
+                                                      SlamBackEndResult* count) const {
+  const AlignmentKey key{from, to, initial.x_m, initial.y_m, initial.theta_rad};
+  RememberedAlignment& remembered = loop_alignments_[key];
+  if (remembered.used_in_solve > 0) {  // aligned before with these very inputs
+    ++count->loop_alignments_reused;
+  } else {
+    remembered.edge = Align(from, to, initial, true, &remembered.degenerate);
+    ++count->loop_alignments_computed;
+  }
+  remembered.used_in_solve = solves_;
+  if (degenerate) *degenerate = remembered.degenerate;
+  return remembered.edge;
 }
 
 PoseGraph SlamBackEnd::BaseGraph(std::map<int, int>* landmark_of_plate, const std::vector<Pose2D>& history) const {
@@ -287,7 +291,7 @@ SlamBackEndResult SlamBackEnd::Optimize(const std::vector<Pose2D>& front_end_his
         if (!closed.insert({i, j}).second) continue;
         bool degenerate = false;
         if (const std::optional<PoseEdge> edge =
-                Align(i, j, pose_of(i).Between(pose_of(j)), true, &degenerate, &result)) {
+                AlignLoopClosure(i, j, pose_of(i).Between(pose_of(j)), &degenerate, &result)) {
           graph.AddEdge(*edge);
           loops.push_back(*edge);
           if (degenerate) kept_a_guess.insert({i, j});
@@ -359,8 +363,8 @@ SlamBackEndResult SlamBackEnd::Optimize(const std::vector<Pose2D>& front_end_his
       if (!kept_a_guess.count({edge.from, edge.to})) {
         realigned.push_back(edge);
       } else if (const std::optional<PoseEdge> again =
-                     Align(edge.from, edge.to, graph.node(edge.from).Between(graph.node(edge.to)), true,
-                           nullptr, &result)) {
+                     AlignLoopClosure(edge.from, edge.to, graph.node(edge.from).Between(graph.node(edge.to)),
+                                      nullptr, &result)) {
         realigned.push_back(*again);
       }
     }

@@ -199,12 +199,14 @@ class SlamBackEnd {
   // Whether an alignment's result lies within sequential_gate_sigmas of the odometry's relative pose.
   bool AgreesWithOdometry(const Pose2D& odometry, const Pose2D& aligned) const;
   // `degenerate` (if given): whether the alignment kept the guess along a direction the scans do not fix.
-  // Loop-closure alignments are remembered from one solve to the next by their exact inputs (nodes and
-  // guess to the bit: the same inputs give the same result, so nothing changes but the time): the
-  // closures proposed at the front end's poses, which do not move, are aligned once, not at every solve.
-  // `count` (if given): its loop_alignments_computed / _reused is incremented.
   std::optional<PoseEdge> Align(int from, int to, const Pose2D& initial, bool loop_closure,
-                                bool* degenerate = nullptr, SlamBackEndResult* count = nullptr) const;
+                                bool* degenerate = nullptr) const;
+  // Align(..., loop_closure = true) for Optimize's loop closures, remembered from one solve to the next by
+  // its exact inputs (nodes and guess to the bit: the same inputs give the same result, so nothing changes
+  // but the time): the closures proposed at the front end's poses, which do not move, are aligned once, not
+  // at every solve. Counts the call in count->loop_alignments_computed or _reused.
+  std::optional<PoseEdge> AlignLoopClosure(int from, int to, const Pose2D& initial, bool* degenerate,
+                                           SlamBackEndResult* count) const;
 
   const SlamBackEndOptions options_;
   mutable std::vector<Node> nodes_;
@@ -212,12 +214,12 @@ class SlamBackEnd {
   mutable std::vector<PoseEdge> sequential_edges_;  // cached alignments
   mutable int sequential_done_ = 0;                  // nodes whose sequential alignments are cached
   mutable std::list<std::pair<int, IcpReference>> references_;  // most recently used first
-  // Loop-closure alignments by (from, to, guess x, y, θ); an entry not used by the latest Optimize is
+  // AlignLoopClosure's results by (from, to, guess x, y, θ); an entry not used by the latest Optimize is
   // dropped at its end (a guess from a solved pose rarely comes again), so it holds one solve's.
   struct RememberedAlignment {
     std::optional<PoseEdge> edge;
     bool degenerate = false;
-    int used_in_solve = 0;
+    int used_in_solve = 0;  // the Optimize call (solves_, from 1) that last used it
   };
   using AlignmentKey = std::tuple<int, int, double, double, double>;
   mutable std::map<AlignmentKey, RememberedAlignment> loop_alignments_;
