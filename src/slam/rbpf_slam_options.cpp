@@ -113,6 +113,8 @@ const TextField kTextFields[] = {
     {"back_end.max_nodes_per_place", nullptr, [](T& o) { return &o.back_end.max_nodes_per_place; }},
     {"back_end.place_radius_m", [](T& o) { return &o.back_end.place_radius_m; }},
     {"back_end.place_max_heading_diff_rad", [](T& o) { return &o.back_end.place_max_heading_diff_rad; }},
+    {"back_end.place_max_odometry_displacement_fraction",
+     [](T& o) { return &o.back_end.place_max_odometry_displacement_fraction; }},
     {"back_end.odometry_trans_m2_per_m", [](T& o) { return &o.back_end.odometry_trans_m2_per_m; }},
     {"back_end.odometry_trans_m2_per_rad", [](T& o) { return &o.back_end.odometry_trans_m2_per_rad; }},
     {"back_end.odometry_rot_rad2_per_m", [](T& o) { return &o.back_end.odometry_rot_rad2_per_m; }},

@@ -95,6 +95,9 @@ TEST(SlamBackEndOptions, BadOptionsThrowNamingTheField) {
   o.place_max_heading_diff_rad = std::nan("");
   ExpectThrowNaming(o, "SlamBackEndOptions.place_max_heading_diff_rad");
   o = {};
+  o.place_max_odometry_displacement_fraction = 1.5;
+  ExpectThrowNaming(o, "SlamBackEndOptions.place_max_odometry_displacement_fraction");
+  o = {};
   o.front_end_history_sigma_m = -0.01;
   ExpectThrowNaming(o, "SlamBackEndOptions.front_end_history_sigma_m");
   o = {};

@@ -287,17 +287,17 @@ TEST(SlamBackEnd, APlaceHoldingMaxNodesPerPlaceNamesItsNearestNodeWithPointsAsAn
   SlamBackEnd back_end(o);
   const auto add = [&](const Pose2D& pose) { return back_end.AddNode(PointsAt(test::Room(), pose), pose, pose); };
   EXPECT_TRUE(add({0, 0, 0}));
-  EXPECT_FALSE(back_end.FullPlaceAnchor({0.1, 0, 0}).has_value()) << "one node: room for another";
+  EXPECT_FALSE(back_end.FullPlaceAnchor({0.1, 0, 0}, {0.1, 0, 0}).has_value()) << "one node: room for another";
   EXPECT_TRUE(add({0.3, 0, 0}));
-  ASSERT_TRUE(back_end.FullPlaceAnchor({0.25, 0, 0}).has_value());
-  EXPECT_EQ(*back_end.FullPlaceAnchor({0.25, 0, 0}), 1);
-  EXPECT_EQ(*back_end.FullPlaceAnchor({0.05, 0.1, 0.5}), 0);
-  EXPECT_FALSE(back_end.FullPlaceAnchor({0.15, 0, M_PI}).has_value()) << "facing the other way: another place";
-  EXPECT_FALSE(back_end.FullPlaceAnchor({0.7, 0, 0}).has_value()) << "only node 1 within place_radius_m";
+  ASSERT_TRUE(back_end.FullPlaceAnchor({0.25, 0, 0}, {0.25, 0, 0}).has_value());
+  EXPECT_EQ(*back_end.FullPlaceAnchor({0.25, 0, 0}, {0.25, 0, 0}), 1);
+  EXPECT_EQ(*back_end.FullPlaceAnchor({0.05, 0.1, 0.5}, {0.05, 0.1, 0.5}), 0);
+  EXPECT_FALSE(back_end.FullPlaceAnchor({0.15, 0, M_PI}, {0.15, 0, M_PI}).has_value()) << "facing the other way: another place";
+  EXPECT_FALSE(back_end.FullPlaceAnchor({0.7, 0, 0}, {0.7, 0, 0}).has_value()) << "only node 1 within place_radius_m";
   EXPECT_FALSE(add({0.2, 0.05, 0.1})) << "a full place: the node keeps no points";
   EXPECT_EQ(back_end.nodes_on_mapped_ground(), 1);
   EXPECT_EQ(back_end.mapped_ground_alignments(), 1);
-  EXPECT_EQ(*back_end.FullPlaceAnchor({0.2, 0.05, 0.1}), 1) << "a node without points is never an anchor";
+  EXPECT_EQ(*back_end.FullPlaceAnchor({0.2, 0.05, 0.1}, {0.2, 0.05, 0.1}), 1) << "a node without points is never an anchor";
 
   SlamBackEndOptions one_visit = o;  // the default separation: nodes of the same visit never fill a place
   one_visit.loop_closure_min_separation = 20;
@@ -310,7 +310,29 @@ TEST(SlamBackEnd, APlaceHoldingMaxNodesPerPlaceNamesItsNearestNodeWithPointsAsAn
   o.max_nodes_per_place = 0;  // off
   SlamBackEnd unbounded(o);
   for (int i = 0; i < 5; ++i) EXPECT_TRUE(unbounded.AddNode(PointsAt(test::Room(), {0, 0, 0}), {0, 0, 0}, {0, 0, 0}));
-  EXPECT_FALSE(unbounded.FullPlaceAnchor({0, 0, 0}).has_value());
+  EXPECT_FALSE(unbounded.FullPlaceAnchor({0, 0, 0}, {0, 0, 0}).has_value());
+}
+
+TEST(SlamBackEnd, OnePassWhoseFrontEndPoseStandsStillWhileOdometryDrivesOnFillsNoPlace) {
+  SlamBackEndOptions o;
+  o.max_nodes_per_place = 2;
+  o.loop_closure_min_separation = 2;
+  SlamBackEnd back_end(o);
+  // A featureless stretch: the front end keeps the pose at x = 0 while odometry drives 0.5 m per node.
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_TRUE(back_end.AddNode(PointsAt(test::Room(), {0, 0, 0}), {0.5 * i, 0, 0}, {0, 0, 0})) << "node " << i;
+  }
+  EXPECT_EQ(back_end.nodes_on_mapped_ground(), 0);
+  // Back at the start after a lap (odometry 0.2 m off after ~25 m driven): the same place, a second visit.
+  back_end.AddNode(PointsAt(test::Room(), {0, 0, 0}), {12.5, 0, 0}, {0, 0, 0});
+  const Pose2D lap_done{0.2, 0.1, 0};
+  ASSERT_TRUE(back_end.FullPlaceAnchor({0, 0, 0}, lap_done).has_value());
+  o.place_max_odometry_displacement_fraction = 0;  // only odometry within place_radius_m is a revisit
+  SlamBackEnd strict(o);
+  for (int i = 0; i < 6; ++i) strict.AddNode(PointsAt(test::Room(), {0, 0, 0}), {0.5 * i, 0, 0}, {0, 0, 0});
+  strict.AddNode(PointsAt(test::Room(), {0, 0, 0}), {12.5, 0, 0}, {0, 0, 0});
+  EXPECT_FALSE(strict.FullPlaceAnchor({0, 0, 0}, {5.0, 0, 0}).has_value()) << "the lap came back 5 m off";
+  EXPECT_TRUE(strict.FullPlaceAnchor({0, 0, 0}, {2.3, 0, 0}).has_value()) << "within place_radius_m of nodes 4, 5";
 }
 
 TEST(SlamBackEnd, NodesOnMappedGroundArePlacedByTheirAlignmentWithThePlaceNotByTheFrontEnd) {

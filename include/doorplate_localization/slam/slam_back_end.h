@@ -103,6 +103,13 @@ struct SlamBackEndOptions {
   int max_nodes_per_place = 6;
   double place_radius_m = 0.5;
   double place_max_heading_diff_rad = 0.8;
+  // An earlier node is another visit of the place only if odometry says the robot came back to it: between
+  // them odometry moved it by at most place_radius_m or this fraction of the distance it drove. A single
+  // straight pass moves it by all of that distance, so a front end whose poses stand still in a featureless
+  // stretch (its scan match fixes nothing along the corridor) does not make one pass fill a place; a pass
+  // after a turn-around or a lap comes back with an odometry displacement of its drift only. In [0, 1];
+  // 1: no check (every earlier node in the place counts, the rule before 2026-12-07).
+  double place_max_odometry_displacement_fraction = 0.5;
   ScanIcpOptions icp;
   PoseGraphOptions graph;
 };
@@ -143,10 +150,11 @@ class SlamBackEnd {
   void AddPlateReading(int plate_id, int node, const Vec2& in_node_frame);
 
   // With max_nodes_per_place > 0: the nearest node with points of the place around `front_end_pose` (map
-  // frame) when that place already holds max_nodes_per_place of them from earlier visits (a node added now
-  // would be loop_closure_min_separation or more after them; its scan would map nothing new); unset when
-  // the place has room or the budget is off.
-  std::optional<int> FullPlaceAnchor(const Pose2D& front_end_pose) const;
+  // frame) when that place already holds max_nodes_per_place of them from earlier visits (a node added now,
+  // at `odometry_pose` (odom frame), would be loop_closure_min_separation or more after them, and odometry
+  // says the robot came back: place_max_odometry_displacement_fraction; its scan would map nothing new);
+  // unset when the place has room or the budget is off.
+  std::optional<int> FullPlaceAnchor(const Pose2D& front_end_pose, const Pose2D& odometry_pose) const;
 
   // Builds and solves the graph (sequential alignments are computed once per node and kept).
   // `front_end_history`: per node, the front end's pose as its trajectory estimate at this moment has it (the
@@ -168,6 +176,7 @@ class SlamBackEnd {
     Pose2D front_end;
     bool front_end_pinned = true;
     bool has_points = true;                 // false: added on mapped ground, points dropped
+    double odometry_path_m = 0.0;           // distance driven (odometry) from node 0 to this node
   };
   struct PlateReading {
     int plate_id;
@@ -188,6 +197,8 @@ class SlamBackEnd {
   // Translation and heading variance of an odometry step (the noise options above, without the scale).
   std::pair<double, double> OdometryVariances(const Pose2D& step) const;
   PoseEdge OdometryEdge(int from, int to) const;
+  // The odometry distance driven from node 0 to `odometry_pose` through every node so far (0 with none).
+  double OdometryPathTo(const Pose2D& odometry_pose) const;
   // The graph without loop closures: nodes at the front end's poses, odometry, sequential alignments and
   // plates (landmark index per plate id into `landmark_of_plate`).
   PoseGraph BaseGraph(std::map<int, int>* landmark_of_plate, const std::vector<Pose2D>& history) const;
