@@ -108,6 +108,23 @@ TEST(PoseAtTimeTest, TakesTheNearestSampleAndClampsAtTheEnds) {
   EXPECT_DOUBLE_EQ(PoseAtTime(track, 9.0).x_m, 2.0);
 }
 
+TEST(WorldFromMapAtFirstNodeTest, AlignsWhereOdometryReadTheFirstNodeNotAtTheBagsStart) {
+  RecordedRun run;
+  // The robot stands at the start, then turns and drives; odometry turns 0.01 rad more than the robot did
+  // and keeps that error. The mapper's first processed scan came at t = 3 (odometry (1, 0.01, 0.06)).
+  run.truth = {{0.0, {5.0, 2.0, 0.0}}, {1.0, {5.0, 2.0, 0.0}}, {2.0, {5.5, 2.0, 0.05}}, {3.0, {6.0, 2.02, 0.05}}};
+  run.odometry = {{0.0, {0.0, 0.0, 0.0}}, {1.0, {0.0, 0.0, 0.0}}, {2.0, {0.5, 0.0, 0.06}}, {3.0, {1.0, 0.01, 0.06}}};
+  const Pose2D at_first_node = WorldFromMapAtFirstNode(run, {1.0, 0.01, 0.06});
+  const Pose2D expected = run.truth[3].pose.Compose(run.odometry[3].pose.Inverse());
+  EXPECT_NEAR(at_first_node.x_m, expected.x_m, 1e-12);
+  EXPECT_NEAR(at_first_node.y_m, expected.y_m, 1e-12);
+  EXPECT_NEAR(at_first_node.theta_rad, -0.01, 1e-12) << "the odometry's turn error, which the map frame holds";
+  // A node read while standing still: the first of the equal messages (truth and odometry constant there).
+  const Pose2D at_rest = WorldFromMapAtFirstNode(run, {0.0, 0.0, 0.0});
+  EXPECT_DOUBLE_EQ(at_rest.x_m, 5.0);
+  EXPECT_DOUBLE_EQ(at_rest.theta_rad, 0.0);
+}
+
 TEST(PathLengthTest, SumsTheStepsInsideTheTimeWindow) {
   const std::vector<StampedPose> track{{1.0, {0.0, 0.0, 0.0}}, {2.0, {3.0, 4.0, 0.0}}, {3.0, {3.0, 5.0, 0.0}}};
   EXPECT_DOUBLE_EQ(PathLength(track, 0.0, 10.0), 6.0);

@@ -1,6 +1,8 @@
 #include "mission_bags.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <nav_msgs/Odometry.h>
@@ -71,6 +73,17 @@ Pose2D PoseAtTime(const std::vector<StampedPose>& track, double time_s) {
   if (it == track.begin()) return track.front().pose;
   if (it == track.end()) return track.back().pose;
   return time_s - std::prev(it)->time_s < it->time_s - time_s ? std::prev(it)->pose : it->pose;
+}
+
+Pose2D WorldFromMapAtFirstNode(const RecordedRun& mapping, const Pose2D& first_node) {
+  const StampedPose* best = &mapping.odometry.front();
+  double best_d = std::numeric_limits<double>::infinity();
+  for (const StampedPose& o : mapping.odometry) {
+    const double d = Norm(o.pose.Position() - first_node.Position()) +
+                     std::abs(NormalizeAngle(o.pose.theta_rad - first_node.theta_rad));
+    if (d < best_d) best_d = d, best = &o;
+  }
+  return PoseAtTime(mapping.truth, best->time_s).Compose(best->pose.Inverse());
 }
 
 double PathLength(const std::vector<StampedPose>& track, double from_s, double to_s) {

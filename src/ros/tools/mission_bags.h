@@ -44,6 +44,14 @@ RecordedRun ReadRecordedRun(const std::string& bag_path);
 // The pose of `track` nearest in time to `time_s` (track sorted by time, not empty).
 Pose2D PoseAtTime(const std::vector<StampedPose>& track, double time_s);
 
+// world_from_map of the mapping run: the mapping nodelet's map frame is the odometry frame at its SLAM's first
+// processed scan (rbpf_slam.h), where odometry read `first_node` (node 0 of the saved trajectory, odom frame).
+// So the truth composed with the inverse odometry at the odometry message that read that pose (nearest in
+// position, 1 rad counted as 1 m; the first of equals, as when the robot stood still), not at the bag's first
+// message: odometry drifts between the two when the mapper starts after the robot has moved (a 0.005 rad
+// turn of the alignment is 0.2 m at 40 m). `mapping.odometry` and `.truth` sorted by time, not empty.
+Pose2D WorldFromMapAtFirstNode(const RecordedRun& mapping, const Pose2D& first_node);
+
 // Length of the path through the track's positions between two times (inclusive), metres.
 double PathLength(const std::vector<StampedPose>& track, double from_s, double to_s);
 

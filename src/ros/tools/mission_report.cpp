@@ -5,8 +5,9 @@
 // long, with the paths, the true and mapped plates and their errors as magnified arrows),
 // DIR/plate_errors.png (per-plate errors) and, given the particle spread log that scripts/mission_progress.py
 // writes (--particle-spread), DIR/localization.png (the particles' spread against the distance driven).
-// Frames: the SLAM's map frame is its odometry frame (rbpf_slam.h), so world_from_map is the true pose
-// composed with the inverse odometry pose at the mapping run's start.
+// Frames: the SLAM's map frame is its odometry frame at its first processed scan (rbpf_slam.h), so
+// world_from_map is the true pose composed with the inverse odometry pose there: where odometry read node 0
+// of the saved trajectory (maps/map.trajectory.txt; WorldFromMapAtFirstNode).
 // Usage: doorplate_mission_report --world W.yaml --maps DIR --mapping-bag B1 --localization-bag B2 --room R
 //                                 --out DIR [--particle-spread CSV] [--title TEXT]
 // Exit codes: 0 written, 1 bad input (named), 2 bad command line.
@@ -15,6 +16,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -52,6 +54,24 @@ void AddOptions(CLI::App* app, Args* a) {
   app->add_option("--out", a->out, "folder of report.md and its pictures")->required();
   app->add_option("--particle-spread", a->particle_spread, "the particle spread log of scripts/mission_progress.py");
   app->add_option("--title", a->title, "the report's title")->capture_default_str();
+}
+
+// Node 0 of the mapping nodelet's saved trajectory (`scan_index x y theta` lines, map frame = odom frame),
+// or unset (with a note on stderr) if the file is missing or has no pose line.
+std::optional<dl::Pose2D> FirstNode(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  while (in && std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    long long index = 0;
+    dl::Pose2D p;
+    if (fields >> index >> p.x_m >> p.y_m >> p.theta_rad) return p;
+    break;
+  }
+  std::cerr << "doorplate_mission_report: " << path << ": no trajectory pose; the map is aligned at the mapping "
+            << "bag's first odometry message instead of the SLAM's first processed scan\n";
+  return std::nullopt;
 }
 
 // The first time a status/state text starts with `prefix`, or a negative number if never.
@@ -133,9 +153,9 @@ int main(int argc, char** argv) {
     const dl::RecordedRun localization = dl::ReadRecordedRun(args.localization_bag);
 
     // --- mapping: plates read (Table I), map extent and plates (Table II) ---
-    const double t0 = mapping.odometry.front().time_s;
+    const std::optional<dl::Pose2D> first_node = FirstNode(args.maps + "/map.trajectory.txt");
     const dl::Pose2D world_from_map =
-        dl::PoseAtTime(mapping.truth, t0).Compose(mapping.odometry.front().pose.Inverse());
+        dl::WorldFromMapAtFirstNode(mapping, first_node.value_or(mapping.odometry.front().pose));
     const dl::Pose2D map_from_world = world_from_map.Inverse();
     std::set<std::string> true_texts, read_correct, read_wrong;  // canonical room ids
     for (const dl::TextLandmark& l : truth_plates.landmarks) true_texts.insert(dl::CanonicalRoomId(l.text));
