@@ -65,11 +65,6 @@ void SlamBackEnd::AddPlateReading(int plate_id, int node, const Vec2& in_node_fr
   plates_.push_back({plate_id, node, in_node_frame});
 }
 
-double SlamBackEnd::OdometryPathTo(const Pose2D& odometry_pose) const {
-  if (nodes_.empty()) return 0.0;
-  return nodes_.back().odometry_path_m + Norm(odometry_pose.Position() - nodes_.back().odometry.Position());
-}
-
 std::optional<int> SlamBackEnd::FullPlaceAnchor(const Pose2D& front_end_pose, const Pose2D& odometry_pose) const {
   if (options_.max_nodes_per_place <= 0) return std::nullopt;
   const double path_m = OdometryPathTo(odometry_pose);

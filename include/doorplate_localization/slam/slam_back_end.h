@@ -198,7 +198,10 @@ class SlamBackEnd {
   std::pair<double, double> OdometryVariances(const Pose2D& step) const;
   PoseEdge OdometryEdge(int from, int to) const;
   // The odometry distance driven from node 0 to `odometry_pose` through every node so far (0 with none).
-  double OdometryPathTo(const Pose2D& odometry_pose) const;
+  double OdometryPathTo(const Pose2D& odometry_pose) const {
+    if (nodes_.empty()) return 0.0;
+    return nodes_.back().odometry_path_m + Norm(odometry_pose.Position() - nodes_.back().odometry.Position());
+  }
   // The graph without loop closures: nodes at the front end's poses, odometry, sequential alignments and
   // plates (landmark index per plate id into `landmark_of_plate`).
   PoseGraph BaseGraph(std::map<int, int>* landmark_of_plate, const std::vector<Pose2D>& history) const;
