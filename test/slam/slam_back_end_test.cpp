@@ -9,17 +9,14 @@
 
 #include <gtest/gtest.h>
 
+#include "slam_back_end_test_fixtures.h"
 #include "slam_test_worlds.h"
 
 namespace doorplate_localization {
 namespace {
 
-constexpr int kBeams = 180;
-constexpr double kMaxRangeM = 16.0;
-
-std::vector<Vec2> PointsAt(const std::vector<Segment>& walls, const Pose2D& pose) {
-  return test::Points(test::Scan(walls, pose, kBeams, kMaxRangeM));
-}
+using test::PointsAt;
+using test::RoomRun;
 
 // A 2 m wide, 40 m long corridor along x (0 to 40 m), closed at both ends.
 std::vector<Segment> Corridor40() {
@@ -63,9 +60,6 @@ TEST(SlamBackEnd, ACorridorRunWithTooLongOdometryIsRescaledByTheEndWalls) {
   EXPECT_GT(unscaled_error_m, 0.15);
   EXPECT_GT(unscaled_error_m, 2 * error_m);
 }
-
-// A few nodes turning on the spot and driving in the 6 m × 4 m room, with exact odometry.
-std::vector<Pose2D> RoomRun() { return {{0, 0, 0}, {0.3, 0, M_PI / 4}, {0.6, 0.1, M_PI / 2}, {0.6, -0.4, M_PI}}; }
 
 TEST(SlamBackEnd, APlateReadFromTwoNodesBecomesOneLandmarkAtItsPlace) {
   SlamBackEnd back_end{SlamBackEndOptions{}};
@@ -183,7 +177,7 @@ void FeedOutAndBack(double return_offset_m, SlamBackEnd* back_end) {
   for (double x = 20.5; x >= 1.0 - 1e-9; x -= 0.5) truth.push_back({x, 0.3, M_PI});
   const int out_nodes = 41;
   for (int i = 0; i < static_cast<int>(truth.size()); ++i) {
-    LaserScan scan = test::Scan(Corridor40(), truth[i], kBeams, kMaxRangeM);
+    LaserScan scan = test::Scan(Corridor40(), truth[i], test::kBackEndBeams, test::kBackEndMaxRangeM);
     for (float& r : scan.ranges_m) r += static_cast<float>(noise_m(random));
     const double offset_m = i < out_nodes ? 0.0 : return_offset_m;
     back_end->AddNode(test::Points(scan), truth[i], {truth[i].x_m + offset_m, truth[i].y_m, truth[i].theta_rad});
@@ -280,82 +274,6 @@ TEST(SlamBackEnd, APlateReadingAtANodeThatDoesNotExistThrows) {
   EXPECT_EQ(back_end.Optimize().plate_readings, 1);
 }
 
-TEST(SlamBackEnd, APlaceHoldingMaxNodesPerPlaceNamesItsNearestNodeWithPointsAsAnchor) {
-  SlamBackEndOptions o;
-  o.max_nodes_per_place = 2;
-  o.loop_closure_min_separation = 1;  // every earlier node is an earlier visit
-  SlamBackEnd back_end(o);
-  const auto add = [&](const Pose2D& pose) { return back_end.AddNode(PointsAt(test::Room(), pose), pose, pose); };
-  EXPECT_TRUE(add({0, 0, 0}));
-  EXPECT_FALSE(back_end.FullPlaceAnchor({0.1, 0, 0}, {0.1, 0, 0}).has_value()) << "one node: room for another";
-  EXPECT_TRUE(add({0.3, 0, 0}));
-  ASSERT_TRUE(back_end.FullPlaceAnchor({0.25, 0, 0}, {0.25, 0, 0}).has_value());
-  EXPECT_EQ(*back_end.FullPlaceAnchor({0.25, 0, 0}, {0.25, 0, 0}), 1);
-  EXPECT_EQ(*back_end.FullPlaceAnchor({0.05, 0.1, 0.5}, {0.05, 0.1, 0.5}), 0);
-  EXPECT_FALSE(back_end.FullPlaceAnchor({0.15, 0, M_PI}, {0.15, 0, M_PI}).has_value()) << "facing the other way: another place";
-  EXPECT_FALSE(back_end.FullPlaceAnchor({0.7, 0, 0}, {0.7, 0, 0}).has_value()) << "only node 1 within place_radius_m";
-  EXPECT_FALSE(add({0.2, 0.05, 0.1})) << "a full place: the node keeps no points";
-  EXPECT_EQ(back_end.nodes_on_mapped_ground(), 1);
-  EXPECT_EQ(back_end.mapped_ground_alignments(), 1);
-  EXPECT_EQ(*back_end.FullPlaceAnchor({0.2, 0.05, 0.1}, {0.2, 0.05, 0.1}), 1) << "a node without points is never an anchor";
-
-  SlamBackEndOptions one_visit = o;  // the default separation: nodes of the same visit never fill a place
-  one_visit.loop_closure_min_separation = 20;
-  SlamBackEnd turning(one_visit);
-  for (int i = 0; i < 13; ++i) {
-    const Pose2D on_the_spot{0, 0, 0.25 * i};
-    EXPECT_TRUE(turning.AddNode(PointsAt(test::Room(), on_the_spot), on_the_spot, on_the_spot));
-  }
-
-  o.max_nodes_per_place = 0;  // off
-  SlamBackEnd unbounded(o);
-  for (int i = 0; i < 5; ++i) EXPECT_TRUE(unbounded.AddNode(PointsAt(test::Room(), {0, 0, 0}), {0, 0, 0}, {0, 0, 0}));
-  EXPECT_FALSE(unbounded.FullPlaceAnchor({0, 0, 0}, {0, 0, 0}).has_value());
-}
-
-TEST(SlamBackEnd, OnePassWhoseFrontEndPoseStandsStillWhileOdometryDrivesOnFillsNoPlace) {
-  SlamBackEndOptions o;
-  o.max_nodes_per_place = 2;
-  o.loop_closure_min_separation = 2;
-  SlamBackEnd back_end(o);
-  // A featureless stretch: the front end keeps the pose at x = 0 while odometry drives 0.5 m per node.
-  for (int i = 0; i < 6; ++i) {
-    EXPECT_TRUE(back_end.AddNode(PointsAt(test::Room(), {0, 0, 0}), {0.5 * i, 0, 0}, {0, 0, 0})) << "node " << i;
-  }
-  EXPECT_EQ(back_end.nodes_on_mapped_ground(), 0);
-  // Back at the start after a lap (odometry 0.2 m off after ~25 m driven): the same place, a second visit.
-  back_end.AddNode(PointsAt(test::Room(), {0, 0, 0}), {12.5, 0, 0}, {0, 0, 0});
-  const Pose2D lap_done{0.2, 0.1, 0};
-  ASSERT_TRUE(back_end.FullPlaceAnchor({0, 0, 0}, lap_done).has_value());
-  o.place_max_odometry_displacement_fraction = 0;  // only odometry within place_radius_m is a revisit
-  SlamBackEnd strict(o);
-  for (int i = 0; i < 6; ++i) strict.AddNode(PointsAt(test::Room(), {0, 0, 0}), {0.5 * i, 0, 0}, {0, 0, 0});
-  strict.AddNode(PointsAt(test::Room(), {0, 0, 0}), {12.5, 0, 0}, {0, 0, 0});
-  EXPECT_FALSE(strict.FullPlaceAnchor({0, 0, 0}, {5.0, 0, 0}).has_value()) << "the lap came back 5 m off";
-  EXPECT_TRUE(strict.FullPlaceAnchor({0, 0, 0}, {2.3, 0, 0}).has_value()) << "within place_radius_m of nodes 4, 5";
-}
-
-TEST(SlamBackEnd, NodesOnMappedGroundArePlacedByTheirAlignmentWithThePlaceNotByTheFrontEnd) {
-  SlamBackEndOptions o;
-  o.max_nodes_per_place = 1;
-  o.loop_closure_min_separation = 1;
-  o.place_max_heading_diff_rad = 0.3;  // RoomRun's nodes are each a place of their own
-  SlamBackEnd back_end(o);
-  const std::vector<Pose2D> truth = RoomRun();
-  for (const Pose2D& pose : truth) back_end.AddNode(PointsAt(test::Room(), pose), pose, pose);
-  // Back at the first pose; odometry and the front end say 0.1 m further east and 0.05 rad off.
-  const Pose2D back{0.05, 0.0, 0.0}, off{0.15, 0.0, 0.05};
-  const Pose2D odometry = truth.back().Compose(truth.back().Between(back)).Compose(back.Between(off));
-  EXPECT_FALSE(back_end.AddNode(PointsAt(test::Room(), back), odometry, off));
-  ASSERT_EQ(back_end.mapped_ground_alignments(), 1);
-  const SlamBackEndResult result = back_end.Optimize();
-  ASSERT_EQ(result.poses.size(), truth.size() + 1);
-  EXPECT_EQ(result.nodes_on_mapped_ground, 1);
-  EXPECT_NEAR(result.poses.back().x_m, back.x_m, 0.03);
-  EXPECT_NEAR(result.poses.back().theta_rad, back.theta_rad, 0.01);
-}
-
-// Expects the constructor to throw std::invalid_argument whose message starts with `field`.
 // FeedLongOdometryRun's corridor run (odometry 2% long), the front end's pose at each node the truth and
 // pinned as `pinned` says, solved with edges from a front-end history that puts every node at
 // x = 1 + 0.99 (x_true - 1): the history's own shape, 1% shorter than the truth.
