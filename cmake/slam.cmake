@@ -7,9 +7,11 @@ add_library(doorplate_slam
   src/slam/pose_graph.cpp
   src/slam/rbpf_slam.cpp
   src/slam/rbpf_slam_options.cpp
+  src/slam/scan_fusion.cpp
   src/slam/scan_icp.cpp
   src/slam/scan_matcher.cpp
   src/slam/slam_back_end.cpp
+  src/slam/slam_back_end_odometry.cpp
   src/slam/slam_back_end_options.cpp
   src/slam/text_slam.cpp
   src/slam/text_slam_map.cpp
@@ -41,7 +43,7 @@ if(mrpt-obs_FOUND)
 endif()
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(name carmen_reader correlative_search tiled_grid scan_matcher trajectory_tree rbpf_slam rbpf_slam_options text_slam mapping_session mapping_session_stamp_order pose_graph scan_icp slam_back_end slam_back_end_mapped_ground slam_back_end_options)
+  foreach(name carmen_reader correlative_search tiled_grid scan_matcher trajectory_tree rbpf_slam rbpf_slam_options text_slam mapping_session mapping_session_stamp_order pose_graph scan_fusion scan_icp slam_back_end slam_back_end_mapped_ground slam_back_end_options)
     doorplate_add_core_test(${name}_test test/slam/${name}_test.cpp doorplate_slam)
   endforeach()
 endif()

@@ -68,8 +68,10 @@ void PrintSummary(const MapEvalResult& r, MapMethod method, std::uint64_t seed, 
               "error %.3f m; peak RSS %.0f MB\n",
               r.plates.plates_mapped, r.plates.plates_true, r.plates.plates_in_map, r.plate_reports_used,
               r.plate_reports, r.plates.rmse_m, r.plates.max_error_m, r.final_position_error_m, r.peak_rss_kb / 1024.0);
-  std::printf("  trajectory error (processed scans): RMSE %.3f m, max %.3f m\n", r.trajectory_rmse_m,
-              r.trajectory_max_error_m);
+  std::printf("  trajectory error (processed scans): RMSE %.3f m, max %.3f m; out leg %.2f m (true %.2f) "
+              "accuracy %.2f %%\n",
+              r.trajectory_rmse_m, r.trajectory_max_error_m, r.out_leg.estimated_m, r.out_leg.true_m,
+              100.0 * r.out_leg.accuracy);
   if (r.loop_closures > 0 || r.odometry_scale != 1.0) {
     std::printf("  back end: odometry scale %.4f (true / odometry distance), %d loop closures (%d dropped as "
                 "inconsistent); final maps built in %.2f s CPU\n",

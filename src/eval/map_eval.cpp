@@ -216,6 +216,7 @@ MapEvalResult RunMapEval(const World& world, const MapEvalOptions& options) {
     result.trajectory_max_error_m = std::max(result.trajectory_max_error_m, e);
   }
   result.trajectory_rmse_m = n > 0 ? std::sqrt(sum2 / n) : 0.0;
+  result.out_leg = MeasureOutLeg(result.trajectory, result.true_trajectory);
   for (const int scan : result.pass_end_scans) {
     if (scan >= 0 && static_cast<std::size_t>(scan) < n) {
       result.pass_end_errors_m.push_back(

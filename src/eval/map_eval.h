@@ -99,6 +99,7 @@ struct MapEvalResult {
   double final_position_error_m = 0.0;  // final estimate (back end, else best particle) vs the truth
   double trajectory_rmse_m = 0.0;    // position error of `trajectory` against the truth, per processed scan
   double trajectory_max_error_m = 0.0;
+  OutLeg out_leg;                    // the out leg's length as `trajectory` has it (MeasureOutLeg)
   double odometry_scale = 1.0;       // back end's estimate of true ÷ odometry distance (1 if off)
   double odometry_heading_drift_rad_per_m = 0.0;  // back end's heading drift estimate (0 if off)
   int loop_closures = 0;             // back end's scan-alignment loop closures (in the final graph)

@@ -62,6 +62,9 @@ Json MapEvalJson(const MapEvalResult& r, const MapEvalRunInfo& info) {
   j["plate_ranges_from_wall"] = r.plate_ranges_from_wall;
   j["final_position_error_m"] = r.final_position_error_m;
   j["trajectory_rmse_m"] = r.trajectory_rmse_m;
+  j["out_leg_true_m"] = r.out_leg.true_m;
+  j["out_leg_est_m"] = r.out_leg.estimated_m;
+  j["out_leg_accuracy"] = r.out_leg.accuracy;
   j["trajectory_max_error_m"] = r.trajectory_max_error_m;
   j["back_end_odometry_scale"] = r.odometry_scale;
   j["back_end_odometry_heading_drift_rad_per_m"] = r.odometry_heading_drift_rad_per_m;

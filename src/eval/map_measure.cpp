@@ -135,6 +135,20 @@ CorridorExtent MeasureSegments(const std::vector<Segment>& walls) {
   return extent;
 }
 
+OutLeg MeasureOutLeg(const std::vector<Pose2D>& estimated, const std::vector<Pose2D>& truth) {
+  OutLeg leg;
+  const std::size_t n = std::min(estimated.size(), truth.size());
+  if (n < 2) return leg;
+  for (std::size_t i = 1; i < n; ++i) {
+    const double d = Norm(truth[i].Position() - truth[0].Position());
+    if (d > leg.true_m) leg.true_m = d, leg.turn_index = static_cast<int>(i);
+  }
+  if (leg.turn_index < 0) return leg;
+  leg.estimated_m = Norm(estimated[leg.turn_index].Position() - estimated[0].Position());
+  leg.accuracy = ExtentAccuracy(leg.estimated_m, leg.true_m);
+  return leg;
+}
+
 double ExtentAccuracy(double estimate_m, double truth_m) {
   return truth_m > 0 ? 1.0 - std::abs(estimate_m - truth_m) / truth_m : 0.0;
 }

@@ -37,6 +37,20 @@ CorridorExtent MeasureSegments(const std::vector<Segment>& walls);
 // 1 − |estimate − truth| / truth (Table II's "accuracy"); 0 if truth <= 0.
 double ExtentAccuracy(double estimate_m, double truth_m);
 
+// The out leg of a drive as the SLAM estimated it: from the first pose to the pose farthest from it in
+// truth (the turn at the corridor's far end), the straight-line distance between the two estimated poses
+// against that between the true ones. This is the corridor's length as the trajectory has it; the grid's
+// extent (MeasureGrid) can hide a shrunk corridor that the out and back legs drew twice, offset (a laser-only
+// filter that lost metres along a featureless corridor maps its start wall again where it believes it came
+// back). `estimated` and `truth`: the same poses (e.g. per processed scan), any common frame for each.
+struct OutLeg {
+  int turn_index = -1;      // index of the farthest true pose (-1: fewer than two poses)
+  double true_m = 0.0;
+  double estimated_m = 0.0;
+  double accuracy = 0.0;    // ExtentAccuracy(estimated_m, true_m)
+};
+OutLeg MeasureOutLeg(const std::vector<Pose2D>& estimated, const std::vector<Pose2D>& truth);
+
 // Mapped plates against the true ones. `world_from_map` takes map-frame positions into the world frame.
 // A mapped plate matches the nearest true plate with the same text within `match_radius_m` (each true
 // plate at most once, nearest pairs first). Errors are world-frame distances.

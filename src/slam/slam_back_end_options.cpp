@@ -8,6 +8,11 @@ namespace doorplate_localization {
 
 const SlamBackEndOptions& ValidatedSlamBackEndOptions(const SlamBackEndOptions& o) {
   const auto fail = [](const std::string& what) { throw std::invalid_argument("SlamBackEndOptions." + what); };
+  try {
+    ValidatedScanFusionOptions(o.node_fusion);
+  } catch (const std::invalid_argument& e) {
+    fail(std::string("node_fusion.") + (e.what() + std::string("ScanFusionOptions.").size()));
+  }
   if (o.max_sequential_offset < 1) fail("max_sequential_offset: must be >= 1");
   if (!(o.max_alignment_distance_m > 0)) fail("max_alignment_distance_m: must be > 0");
   if (!(o.loop_closure_radius_m >= 0)) fail("loop_closure_radius_m: must be >= 0");

@@ -60,23 +60,41 @@ TextSlam::TextSlam(const TextSlamOptions& options)
     : options_(Validated(options)),
       room_grammar_(options.room_pattern),
       slam_(options.slam),
-      back_end_(BackEndOptions(options)) {}
+      back_end_(BackEndOptions(options)),
+      node_fusion_(options.back_end.node_fusion) {}
 
 bool TextSlam::AddScan(const LaserScan& scan, const Pose2D& odometry_pose, int scan_index, bool force_update) {
   ValidatePose(odometry_pose, "TextSlam::AddScan");
   const int degenerate_before = slam_.stats().degenerate_scans;
   const bool processed = slam_.AddScan(scan, odometry_pose, scan_index, force_update);
+  // Node points fused over neighbouring scans (back_end.node_fusion): every scan is remembered; a node takes
+  // its points fused with the scans before it, and again, once the scans after it are in (or the next node
+  // or a solve comes first), fused with those too.
+  const bool fuse = options_.back_end.enabled && node_fusion_.enabled();
+  const long scan_id = fuse ? node_fusion_.Add(slam_.MatchPoints(scan), odometry_pose) : -1;
+  if (node_awaiting_scans_ && node_fusion_.Complete(node_awaiting_scans_->second)) FinishNodeAwaitingScans();
   if (processed && options_.back_end.enabled) {
+    FinishNodeAwaitingScans();  // before the new node: AddNode may align with it
     const bool pinned = slam_.stats().degenerate_scans == degenerate_before;
-    if (back_end_.AddNode(slam_.MatchPoints(scan), odometry_pose, slam_.BestParticle().pose, pinned)) {
+    std::vector<Vec2> points = fuse ? node_fusion_.Fuse(scan_id) : slam_.MatchPoints(scan);
+    if (back_end_.AddNode(std::move(points), odometry_pose, slam_.BestParticle().pose, pinned)) {
       node_scans_.emplace_back(back_end_.num_nodes() - 1, scan);
+      if (fuse && !node_fusion_.Complete(scan_id)) node_awaiting_scans_.emplace(back_end_.num_nodes() - 1, scan_id);
     }
   }
   return processed;
 }
 
+void TextSlam::FinishNodeAwaitingScans() {
+  if (!node_awaiting_scans_) return;
+  const auto [node, scan_id] = *node_awaiting_scans_;
+  node_awaiting_scans_.reset();
+  back_end_.ReplaceNodePoints(node, node_fusion_.Fuse(scan_id));
+}
+
 void TextSlam::Solve() {
   if (!options_.back_end.enabled || back_end_.num_nodes() == 0) return;
+  FinishNodeAwaitingScans();
   std::vector<Pose2D> history;
   if (options_.back_end.front_end_history_sigma_m > 0) {
     for (const TrajectoryPoint& p : slam_.MeanTrajectory()) history.push_back(p.pose);

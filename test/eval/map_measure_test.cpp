@@ -1,6 +1,9 @@
 // Corridor extent and plate scoring on hand-made grids and text maps.
 #include "map_measure.h"
 
+#include <cmath>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 namespace doorplate_localization {
@@ -97,6 +100,23 @@ TextLandmark Plate(const std::string& text, double x, double y) {
   l.text = text;
   l.pose = {x, y, 0.0};
   return l;
+}
+
+TEST(MeasureOutLeg, ComparesTheEstimatedAndTrueDistanceFromTheStartToTheFarthestTruePose) {
+  // Out 40 m along x and back to 2 m; the estimate shrank the out leg by 10 % and came back "past" its start.
+  std::vector<Pose2D> truth, estimated;
+  for (double x = 0.0; x <= 40.0; x += 1.0) truth.push_back({x, 0, 0}), estimated.push_back({0.9 * x, 0.1, 0});
+  for (double x = 39.0; x >= 2.0; x -= 1.0) truth.push_back({x, 1, M_PI}), estimated.push_back({x - 5.0, 1, M_PI});
+  const OutLeg leg = MeasureOutLeg(estimated, truth);
+  EXPECT_EQ(leg.turn_index, 40);
+  EXPECT_NEAR(leg.true_m, 40.0, 1e-9);
+  EXPECT_NEAR(leg.estimated_m, std::hypot(36.0, 0.0), 1e-9);
+  EXPECT_NEAR(leg.accuracy, 0.9, 1e-9);
+}
+
+TEST(MeasureOutLeg, IsEmptyWithFewerThanTwoPoses) {
+  EXPECT_EQ(MeasureOutLeg({{1, 2, 0}}, {{1, 2, 0}}).turn_index, -1);
+  EXPECT_EQ(MeasureOutLeg({}, {}).accuracy, 0.0);
 }
 
 TEST(ScorePlates, MatchesSameTextNearestFirstThroughTheMapPose) {

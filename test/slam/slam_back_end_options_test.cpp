@@ -103,6 +103,9 @@ TEST(SlamBackEndOptions, BadOptionsThrowNamingTheField) {
   o = {};
   o.front_end_history_sigma_m = 0.005;
   ExpectThrowNaming(o, "SlamBackEndOptions.front_end_history_sigma_rad");
+  o = {};
+  o.node_fusion.scans_after = -1;
+  ExpectThrowNaming(o, "SlamBackEndOptions.node_fusion.scans_after");
 }
 
 }  // namespace

@@ -61,6 +61,18 @@ TEST(SlamBackEnd, ACorridorRunWithTooLongOdometryIsRescaledByTheEndWalls) {
   EXPECT_GT(unscaled_error_m, 2 * error_m);
 }
 
+TEST(SlamBackEnd, NodePointsCanBeReplacedUntilAnAlignmentUsedThem) {
+  SlamBackEnd back_end(SlamBackEndOptions{});
+  back_end.AddNode(PointsAt(Corridor40(), {1, 0, 0}), {1, 0, 0}, {1, 0, 0});
+  back_end.AddNode({}, {1.5, 0, 0}, {1.5, 0, 0});  // no echoes yet: the node cannot be aligned
+  EXPECT_THROW(back_end.ReplaceNodePoints(2, {}), std::invalid_argument);
+  back_end.ReplaceNodePoints(1, PointsAt(Corridor40(), {1.5, 0, 0}));  // now it can
+  const SlamBackEndResult solved = back_end.Optimize();
+  EXPECT_GE(solved.alignment_edges, 1);
+  EXPECT_NEAR(solved.poses.at(1).x_m, 1.5, 0.01);
+  EXPECT_THROW(back_end.ReplaceNodePoints(1, {}), std::logic_error);
+}
+
 TEST(SlamBackEnd, APlateReadFromTwoNodesBecomesOneLandmarkAtItsPlace) {
   SlamBackEnd back_end{SlamBackEndOptions{}};
   const std::vector<Pose2D> truth = RoomRun();

@@ -191,6 +191,32 @@ TEST(TextSlam, MapPlatesAndTrajectoryComeFromTheBackEndSolve) {
   EXPECT_NEAR(after.x_m, solve->poses.back().x_m + 0.2, 1e-6);
 }
 
+TEST(TextSlam, NodePointsFusedWithNeighbouringScansGiveTheSameCorridor) {
+  // A 10 Hz laser at 0.4 m/s: a node every 0.5 m and a dozen scans between; with node fusion every node
+  // takes its neighbours' echoes too, and the solve still puts the corridor where it is.
+  const std::vector<Segment> walls = {{{-0.525, -1.025}, {20.525, -1.025}}, {{-0.525, 1.025}, {20.525, 1.025}},
+                                      {{-0.525, -1.025}, {-0.525, 1.025}}, {{20.525, -1.025}, {20.525, 1.025}}};
+  TextSlamOptions options = FewParticles(10);
+  options.back_end.node_fusion.scans_before = 3;
+  options.back_end.node_fusion.scans_after = 3;
+  TextSlam slam(options);
+  int index = 0, processed = 0;
+  Pose2D last_node_truth;
+  for (const Pose2D& truth : test::PosesAlongX(0.0, 20.0, 0.04)) {
+    if (slam.AddScan(test::Scan(walls, truth, 360, 16.0), {1.02 * truth.x_m, 0.0, 0.0}, index++)) {
+      ++processed;
+      last_node_truth = truth;
+    }
+  }
+  slam.Solve();
+  const std::optional<SlamBackEndResult> solve = slam.BackEndResult();
+  ASSERT_TRUE(solve.has_value());
+  ASSERT_EQ(static_cast<int>(solve->poses.size()), processed);
+  EXPECT_GT(solve->alignment_edges, processed);
+  EXPECT_NEAR(solve->poses.back().x_m, last_node_truth.x_m, 0.05);
+  EXPECT_NEAR(solve->poses.back().y_m, 0.0, 0.03);
+}
+
 TEST(TextSlam, PatrolsOverMappedGroundKeepNoScansButEveryPoseAndPlate) {
   const std::vector<Segment> walls = {{{-0.525, -1.025}, {20.525, -1.025}}, {{-0.525, 1.025}, {20.525, 1.025}},
                                       {{-0.525, -1.025}, {-0.525, 1.025}}, {{20.525, -1.025}, {20.525, 1.025}}};

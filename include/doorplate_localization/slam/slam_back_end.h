@@ -44,9 +44,20 @@
 
 #include "doorplate_localization/common/geometry2d.h"
 #include "doorplate_localization/slam/pose_graph.h"
+#include "doorplate_localization/slam/scan_fusion.h"
 #include "doorplate_localization/slam/scan_icp.h"
 
 namespace doorplate_localization {
+
+// The back end's node fusion: 3 scans before and after, within 0.3 m and 0.005 rad (docs/slam.md "Back end").
+inline ScanFusionOptions DefaultNodeFusion() {
+  ScanFusionOptions o;
+  o.scans_before = 3;
+  o.scans_after = 3;
+  o.max_distance_m = 0.3;
+  o.max_rotation_rad = 0.005;
+  return o;
+}
 
 struct SlamBackEndOptions {
   bool enabled = true;
@@ -110,6 +121,12 @@ struct SlamBackEndOptions {
   // after a turn-around or a lap comes back with an odometry displacement of its drift only. In [0, 1];
   // 1: no check (every earlier node in the place counts, the rule before 2026-12-07).
   double place_max_odometry_displacement_fraction = 0.5;
+  // A node's points (what the alignments match): its scan's echoes, each moved onto the line fitted to it
+  // and its neighbours in the 3 scans before and the 3 after it that odometry says were taken within 0.3 m
+  // and 0.005 rad of it (scan_fusion.h: less range noise, so less heading noise in every alignment; turns
+  // are left out, where odometry's own heading error would smear the fused echoes). Applied by the caller
+  // that sees every scan (TextSlam), not by AddNode. scans_before = scans_after = 0: off.
+  ScanFusionOptions node_fusion = DefaultNodeFusion();
   ScanIcpOptions icp;
   PoseGraphOptions graph;
 };
@@ -146,6 +163,10 @@ class SlamBackEnd {
   // Returns whether the node kept its points (false: mapped ground, max_nodes_per_place).
   bool AddNode(std::vector<Vec2> points, const Pose2D& odometry_pose, const Pose2D& front_end_pose,
                bool front_end_pinned = true);
+  // Node `node`'s points replaced (the same scan's echoes, refined: scan_fusion.h), before any alignment used
+  // them: throws std::logic_error once Optimize has aligned the node, std::invalid_argument for a node that
+  // does not exist or kept no points (mapped ground).
+  void ReplaceNodePoints(int node, std::vector<Vec2> points);
   // A plate reading: the plate's position in the frame of node `node` (0-based, < num_nodes()).
   void AddPlateReading(int plate_id, int node, const Vec2& in_node_frame);
 

@@ -129,6 +129,11 @@ class TextSlam {
   RoomIdGrammar room_grammar_;          // options_.room_pattern
   RbpfSlam slam_;
   SlamBackEnd back_end_;
+  ScanFusion node_fusion_;              // the last scans, for the back end's node points (back_end.node_fusion)
+  // The latest node whose points wait for the scans after it (node index, its scan's id in node_fusion_).
+  std::optional<std::pair<int, long>> node_awaiting_scans_;
+  // Gives that node its points fused with the scans after it that came (SlamBackEnd::ReplaceNodePoints).
+  void FinishNodeAwaitingScans();
   // The processed scans of the nodes that kept theirs (node index, scan), for re-rendering (back end on).
   std::vector<std::pair<int, LaserScan>> node_scans_;
   std::optional<SlamBackEndResult> solved_;  // the last Solve()
