@@ -34,7 +34,7 @@ long ScanFusion::Add(std::vector<Vec2> points, const Pose2D& odometry_pose) {
 
 const ScanFusion::Scan& ScanFusion::At(long id) const {
   const long first = next_id_ - static_cast<long>(scans_.size());
-  if (id < first || id >= next_id_) {
+  if (!Remembered(id)) {
     throw std::out_of_range("ScanFusion: scan " + std::to_string(id) + " is not remembered (scans " +
                             std::to_string(first) + " to " + std::to_string(next_id_ - 1) + " are)");
   }
@@ -64,8 +64,7 @@ int ScanFusion::UsableScansAfter(long id) const {
 }
 
 bool ScanFusion::Complete(long id) const {
-  const long first = next_id_ - static_cast<long>(scans_.size());
-  if (id < first || id >= next_id_) return true;
+  if (!Remembered(id)) return true;
   return next_id_ - 1 - id >= options_.scans_after || (id < next_id_ - 1 && !Usable(At(id), scans_.back()));
 }
 

@@ -89,7 +89,8 @@ void TextSlam::FinishNodeAwaitingScans() {
   if (!node_awaiting_scans_) return;
   const auto [node, scan_id] = *node_awaiting_scans_;
   node_awaiting_scans_.reset();
-  back_end_.ReplaceNodePoints(node, node_fusion_.Fuse(scan_id));
+  // (Always remembered: AddScan finishes the node as soon as its scans_after are in, before it is forgotten.)
+  if (node_fusion_.Remembered(scan_id)) back_end_.ReplaceNodePoints(node, node_fusion_.Fuse(scan_id));
 }
 
 void TextSlam::Solve() {

@@ -142,6 +142,9 @@ TEST(ScanFusion, AScanNoLongerRememberedIsAnErrorNamingIt) {
   ScanFusion fusion(Neighbours(1, 1));
   for (int k = 0; k < 5; ++k) fusion.Add({{1.0, 1.0}}, {});
   EXPECT_THROW(fusion.Fuse(0), std::out_of_range);  // only scans 2-4 are remembered
+  EXPECT_FALSE(fusion.Remembered(0));
+  EXPECT_TRUE(fusion.Remembered(2));
+  EXPECT_FALSE(fusion.Remembered(5));
   EXPECT_TRUE(fusion.Complete(0));
   EXPECT_NO_THROW(fusion.Fuse(3));
 }

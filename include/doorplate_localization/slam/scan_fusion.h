@@ -57,6 +57,8 @@ class ScanFusion {
   int UsableScansAfter(long id) const;
   // ... and before it.
   int UsableScansBefore(long id) const;
+  // Whether scan `id` is still remembered (Fuse(id) works).
+  bool Remembered(long id) const { return id >= next_id_ - static_cast<long>(scans_.size()) && id < next_id_; }
   // Whether no scan added after now can be used for `id`: scans_after of them are in, or the latest is
   // beyond the odometry limits (the robot drove on), or `id` is no longer remembered.
   bool Complete(long id) const;
