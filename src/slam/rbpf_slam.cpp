@@ -8,6 +8,7 @@
 #include <unordered_set>
 
 #include "doorplate_localization/common/limits.h"
+#include "doorplate_localization/slam/minor_axis.h"
 
 namespace doorplate_localization {
 namespace {
@@ -57,11 +58,9 @@ double FindDegenerateAxis(const std::vector<Vec2>& ordered_hits, Vec2* axis) {
     if (std::abs(Cross(u, p - a)) > 0.03) continue;
     sxx += u.y * u.y, sxy -= u.x * u.y, syy += u.x * u.x;  // n = (-u.y, u.x)
   }
-  const double mean = 0.5 * (sxx + syy), diff = 0.5 * (sxx - syy);
-  const double smaller = mean - std::sqrt(diff * diff + sxy * sxy);
-  const double angle = 0.5 * std::atan2(2.0 * sxy, sxx - syy) + 1.5707963267948966;  // minor eigenvector
-  *axis = {std::cos(angle), std::sin(angle)};
-  return smaller;
+  const MinorAxis weakest = MinorAxisOf(sxx, sxy, syy);
+  *axis = weakest.axis;
+  return weakest.eigenvalue;
 }
 
 }  // namespace

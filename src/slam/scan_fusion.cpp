@@ -7,6 +7,8 @@
 #include <unordered_map>
 #include <utility>
 
+#include "doorplate_localization/slam/minor_axis.h"
+
 namespace doorplate_localization {
 
 const ScanFusionOptions& ValidatedScanFusionOptions(const ScanFusionOptions& o) {
@@ -110,12 +112,10 @@ std::vector<Vec2> ScanFusion::Fuse(long id) const {
     if (n < options_.min_neighbours) continue;
     const double mx = sx / n, my = sy / n;
     const double cxx = sxx / n - mx * mx, cxy = sxy / n - mx * my, cyy = syy / n - my * my;
-    const double mean = 0.5 * (cxx + cyy), half_diff = 0.5 * (cxx - cyy);
-    const double smaller = mean - std::sqrt(half_diff * half_diff + cxy * cxy);  // variance across the line
+    const MinorAxis across = MinorAxisOf(cxx, cxy, cyy);  // variance across the line, and its normal
     const double limit = options_.max_residual_m + options_.max_residual_per_m * range;
-    if (!(smaller <= limit * limit)) continue;
-    const double angle = 0.5 * std::atan2(2.0 * cxy, cxx - cyy) + 0.5 * M_PI;  // minor axis: the normal
-    const Vec2 normal{std::cos(angle), std::sin(angle)};
+    if (!(across.eigenvalue <= limit * limit)) continue;
+    const Vec2 normal = across.axis;
     // q is at the origin of the offsets d: move it by its offset from the line through the mean.
     const double off = -Dot(Vec2{mx, my}, normal);  // signed distance of q from the line
     q = q - off * normal;
