@@ -32,6 +32,8 @@ const CorridorSweepOptions& Validated(const CorridorSweepOptions& o) {
           "must be finite and > wall_gate_reset_s");
   Require(o.end_confirm_s >= 0 && std::isfinite(o.end_confirm_s), "end_confirm_s", "must be finite and >= 0");
   Require(o.end_min_width_m >= 0 && std::isfinite(o.end_min_width_m), "end_min_width_m", "must be finite and >= 0");
+  Require(o.end_max_wall_angle_rad > 0 && o.end_max_wall_angle_rad < M_PI / 2, "end_max_wall_angle_rad",
+          "must be in (0, pi/2)");
   Require(o.narrow_end_confirm_s >= o.end_confirm_s && std::isfinite(o.narrow_end_confirm_s), "narrow_end_confirm_s",
           "must be finite and >= end_confirm_s");
   return o;
@@ -118,6 +120,7 @@ void CorridorSweep::Reset() {
   turned_rad_ = 0.0;
   blocked_since_s_.reset();
   wall_direction_odom_rad_.reset();
+  back_direction_odom_rad_.reset();
   gate_dropped_ = false;
 }
 
@@ -170,6 +173,19 @@ VelocityCommand CorridorSweep::Step(const std::vector<float>& ranges_m, double a
     blocked_since_s_.reset();
     return command;
   }
+  // The leg's direction relative to the robot: the followed wall's fit, or on the way back without one the
+  // way out reversed.
+  std::optional<double> leg_angle_rad;
+  if (steer.wall_found) {
+    leg_angle_rad = steer.wall_angle_rad;
+  } else if (phase_ == SweepPhase::kFollowBack && back_direction_odom_rad_) {
+    leg_angle_rad = NormalizeAngle(*back_direction_odom_rad_ - odom_pose.theta_rad);
+  }
+  if (leg_angle_rad && std::fabs(*leg_angle_rad) > options_.end_max_wall_angle_rad) {
+    // Turned across the corridor: a side wall, not the corridor's end. Turn back along the leg.
+    blocked_since_s_.reset();
+    return {0.0, std::copysign(options_.turn_speed_rps, *leg_angle_rad)};
+  }
   if (!blocked_since_s_) blocked_since_s_ = time_s;
   const double wait_s = BlockingWidth(ranges_m, angle_min_rad, angle_increment_rad) >= options_.end_min_width_m
                             ? options_.end_confirm_s
@@ -181,6 +197,8 @@ VelocityCommand CorridorSweep::Step(const std::vector<float>& ranges_m, double a
     return {};
   }
   phase_ = SweepPhase::kTurnAround;
+  back_direction_odom_rad_ =
+      NormalizeAngle((wall_direction_odom_rad_ ? *wall_direction_odom_rad_ : odom_pose.theta_rad) + M_PI);
   approaching_ = true;  // the way back starts at the far wall's distance
   has_wall_ = false;
   wall_direction_odom_rad_.reset();

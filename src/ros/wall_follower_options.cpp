@@ -53,6 +53,11 @@ const ParamTable<WallFollowerNodeOptions>& WallFollowerParamTable() {
                "sweep/patrol: the wait before something narrower than end_min_width_m counts as the end; "
                ">= end_confirm_s",
                r::NonNegative()),
+      Param<O>("end_max_wall_angle_rad", DOORPLATE_PARAM_FIELD(sweep.end_max_wall_angle_rad),
+               "sweep/patrol: something ahead ends a leg only while the robot runs within this angle of the leg's "
+               "wall (or of the way out reversed); turned further (a turn that overshot) it turns back first; "
+               "< pi/2",
+               r::Positive()),
       Param<O>("explore/passes", DOORPLATE_PARAM_FIELD(explore.passes),
                "explore: 1 follows one side only (enough for a floor without loops); 2 also the other side of a "
                "ring",

@@ -71,7 +71,7 @@ RbpfSlam::RbpfSlam(const RbpfSlamOptions& options)
       matcher_(options.matcher, options.grid),
       rng_(options.seed) {}
 
-RbpfSlam::ScanPoints RbpfSlam::PrepareScan(const LaserScan& scan) const {
+RbpfSlam::ScanPoints RbpfSlam::PrepareScan(const LaserScan& scan, bool match_only) const {
   ScanPoints points;
   points.origin = scan.laser_pose.Position();
   std::vector<Vec2> hits;
@@ -82,13 +82,17 @@ RbpfSlam::ScanPoints RbpfSlam::PrepareScan(const LaserScan& scan) const {
     const double a = scan.BeamAngle(i);
     const bool hit = r <= usable;
     const double d = hit ? r : std::isinf(r) ? std::min(usable, options_.no_return_clear_range_m) : usable;
-    if (d <= 0.0) continue;
+    if (d <= 0.0 || (match_only && !hit)) continue;
     const Vec2 end = scan.laser_pose.TransformPoint({d * std::cos(a), d * std::sin(a)});
-    points.integrate.emplace_back(end, hit ? ScanPoints::BeamEnd::kHit
-                                          : std::isinf(r) ? ScanPoints::BeamEnd::kNoReturn : ScanPoints::BeamEnd::kCut);
+    if (!match_only) {
+      const auto kind = hit             ? ScanPoints::BeamEnd::kHit
+                        : std::isinf(r) ? ScanPoints::BeamEnd::kNoReturn
+                                        : ScanPoints::BeamEnd::kCut;
+      points.integrate.emplace_back(end, kind);
+    }
     if (hit && (options_.max_match_range_m <= 0 || r <= options_.max_match_range_m)) hits.push_back(end);
   }
-  if (options_.degenerate_min_points > 0) {
+  if (options_.degenerate_min_points > 0 && !match_only) {
     const double weakest = FindDegenerateAxis(hits, &points.degenerate_axis);
     points.degenerate = weakest < options_.degenerate_min_points;
     // 0 below k = degenerate_min_points (odometry only along the axis), 1 above 2k (the whole correction:

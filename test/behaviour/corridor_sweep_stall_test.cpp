@@ -1,5 +1,6 @@
-// CorridorSweep (corridor_sweep.h) in the closed loop with odometry that stalls, as the wall-following nodelet
-// feeds it on a loaded machine, with and without the nodelet's ~max_odom_lag_s rule (src/ros/wall_follower_nodelet.cpp).
+// CorridorSweep (corridor_sweep.h) in the closed loop as the wall-following nodelet runs it on a loaded
+// machine: odometry that stalls, with and without the nodelet's ~max_odom_lag_s rule
+// (src/ros/wall_follower_nodelet.cpp), and a turn that overshoots because commands reach the wheels late.
 // Kept apart from corridor_sweep_test.cpp, which holds the sweep's own cases, to keep both files small.
 #include "doorplate_localization/behaviour/corridor_sweep.h"
 
@@ -9,7 +10,9 @@
 #include <cstdint>
 #include <random>
 #include <string>
+#include <utility>
 
+#include "../sim/test_worlds.h"
 #include "doorplate_localization/sim/simulator.h"
 #include "doorplate_localization/sim/world_loader.h"
 
@@ -64,6 +67,53 @@ TEST(CorridorSweep, OdometryThatStallsIsRefusedSoTheTurnDoesNotOvershoot) {
   }
   EXPECT_EQ(back_refusing, 12);
   EXPECT_LT(back_stale, 12);  // the failure the rule prevents (seed 1 at least)
+}
+
+// A turn at the far end that overshoots (commands reaching the wheels late on a loaded machine: here the
+// turn's last command stays on the wheels for `overshoot_s` after the sweep ended the turn, at 0.6 rad/s).
+// Returns the sweep's phase at the end and where the robot is.
+std::pair<SweepPhase, Pose2D> SweepWithOvershootingTurn(const CorridorSweepOptions& options, double overshoot_s) {
+  const World world = test::RectangleCorridor(8.0, 2.0);
+  Simulator sim(world, SimulatorOptions{});
+  CorridorSweep sweep(options);
+  VelocityCommand turn_command;
+  double keep_turning_until_s = -1.0;
+  for (long long step = 0; sim.time_s() < 200.0 && sweep.phase() != SweepPhase::kDone; ++step) {
+    if (step % 10 == 0) {
+      const SweepPhase before = sweep.phase();
+      const LaserScan scan = sim.Scan();
+      const VelocityCommand cmd =
+          sweep.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, sim.odom_pose(), sim.time_s());
+      if (before == SweepPhase::kTurnAround && sweep.phase() != before) keep_turning_until_s = sim.time_s() + overshoot_s;
+      if (sweep.phase() == SweepPhase::kTurnAround) turn_command = cmd;
+      const bool late = sim.time_s() < keep_turning_until_s;
+      sim.SetCommand(late ? turn_command.linear_mps : cmd.linear_mps, late ? turn_command.angular_rps : cmd.angular_rps);
+    }
+    sim.Step();
+  }
+  return {sweep.phase(), sim.true_pose()};
+}
+
+// A demo run on the realistic corridor under load: the turn at the far end overshot, the robot faced the
+// south wall, and the sweep took that wall for the corridor's end after end_confirm_s: "done" without a way
+// back (8 of 16 plates mapped). A leg now ends only while the robot runs along its wall
+// (CorridorSweepOptions::end_max_wall_angle_rad); turned across the corridor it turns back first.
+TEST(CorridorSweep, ATurnThatOvershootsIsTurnedBackNotTakenForTheCorridorsEnd) {
+  CorridorSweepOptions without_rule;
+  without_rule.end_max_wall_angle_rad = 1.5;  // any heading may end a leg: the failure the rule prevents
+  // 1.5 s: 0.9 rad too far, the north wall it follows back still fitted on its right; 2 s: 1.2 rad, facing
+  // the south wall with no fit on its right (the way out reversed says where to turn).
+  for (const double overshoot_s : {1.5, 2.0}) {
+    SCOPED_TRACE(overshoot_s);
+    const auto [phase, pose] = SweepWithOvershootingTurn(CorridorSweepOptions{}, overshoot_s);
+    EXPECT_EQ(phase, SweepPhase::kDone);
+    EXPECT_LT(pose.x_m, 1.0);  // came back to the west end
+    EXPECT_LT(std::fabs(NormalizeAngle(pose.theta_rad - M_PI)), 0.1);
+
+    const auto [old_phase, old_pose] = SweepWithOvershootingTurn(without_rule, overshoot_s);
+    EXPECT_EQ(old_phase, SweepPhase::kDone);
+    EXPECT_GT(old_pose.x_m, 7.0);  // "done" at the far end, facing the south wall
+  }
 }
 
 }  // namespace

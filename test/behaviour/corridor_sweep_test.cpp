@@ -357,6 +357,9 @@ TEST(CorridorSweep, InvalidOptionsNameTheField) {
   options = CorridorSweepOptions{};
   options.narrow_end_confirm_s = options.end_confirm_s - 1.0;
   EXPECT_THROW(CorridorSweep{options}, std::invalid_argument);
+  options = CorridorSweepOptions{};
+  options.end_max_wall_angle_rad = M_PI / 2;
+  EXPECT_THROW(CorridorSweep{options}, std::invalid_argument);
   EXPECT_STREQ(SweepPhaseName(SweepPhase::kFollowBack), "follow_back");
 }
 

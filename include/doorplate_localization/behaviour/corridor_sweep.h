@@ -54,6 +54,12 @@ struct CorridorSweepOptions {
   // still an end). end_min_width_m 0: every end waits end_confirm_s only.
   double end_min_width_m = 0.8;
   double narrow_end_confirm_s = 30.0;
+  // Something ahead ends a leg only while the robot runs along the leg: within end_max_wall_angle_rad of the
+  // followed wall's fit (or, on the way back with no fit, of the way out's direction reversed, by odometry).
+  // Stopped before something while turned further across the corridor (a turn at the far end that
+  // overshot under control lag), it turns in place at turn_speed_rps until it runs within that angle again.
+  // On the way out with no wall fit: wait, then end, as before.
+  double end_max_wall_angle_rad = 0.35;
   // Wall direction check: a corridor's wall is straight, so during a leg its direction in the odom frame
   // (odometry yaw + fitted wall angle) stays put; it is taken from the first fit the robot runs parallel to
   // (within parallel_tolerance_rad). A fit more than max_wall_turn_rad from the leg's wall
@@ -126,6 +132,7 @@ class CorridorSweep {
   double last_yaw_rad_ = 0.0;     // odometry yaw at the previous turn step
   std::optional<double> blocked_since_s_;          // stopped before something ahead since then
   std::optional<double> wall_direction_odom_rad_;  // the leg's wall direction in the odom frame
+  std::optional<double> back_direction_odom_rad_;  // the way out reversed (odom frame), set at the turn
   bool gate_dropped_ = false;     // wall_gate_reset_s passed without a wall; cleared by the next fit taken
   double last_wall_s_ = 0.0;      // time of the last step with the wall found (this leg)
 };

@@ -113,7 +113,7 @@ class RbpfSlam {
   // (echoes, cut beams, no-echo beams; docs/slam.md "Ranges"): how a back end re-renders a trajectory.
   void IntegrateScanInto(TiledGrid* map, const LaserScan& scan, const Pose2D& pose) const;
   // The scan's echoes used for matching (at most max_match_points, evenly subsampled), in base_link.
-  std::vector<Vec2> MatchPoints(const LaserScan& scan) const { return PrepareScan(scan).match; }
+  std::vector<Vec2> MatchPoints(const LaserScan& scan) const { return PrepareScan(scan, /*match_only=*/true).match; }
 
  private:
   struct ScanPoints {
@@ -125,7 +125,9 @@ class RbpfSlam {
     bool degenerate = false;                       // ...if its information is below degenerate_min_points
     double along_axis_gain = 1.0;                  // share of the correction kept along that axis, 0-1
   };
-  ScanPoints PrepareScan(const LaserScan& scan) const;
+  // match_only: only `match` (the back end's node points, every scan at the laser's rate): no beam list to
+  // integrate, no degeneracy axis.
+  ScanPoints PrepareScan(const LaserScan& scan, bool match_only = false) const;
   int BestIndex() const;
   void Integrate(TiledGrid& map, const Pose2D& pose, const ScanPoints& points) const;
   // Resamples if Neff is low; then, if `scan` is given, adds it to every particle's map (once per

@@ -49,13 +49,13 @@
 
 namespace doorplate_localization {
 
-// The back end's node fusion: 3 scans before and after, within 0.3 m and 0.005 rad (docs/slam.md "Back end").
+// The back end's node fusion: 3 scans before and after, within 0.3 m and 0.015 rad (docs/slam.md "Back end").
 inline ScanFusionOptions DefaultNodeFusion() {
   ScanFusionOptions o;
   o.scans_before = 3;
   o.scans_after = 3;
   o.max_distance_m = 0.3;
-  o.max_rotation_rad = 0.005;
+  o.max_rotation_rad = 0.015;
   return o;
 }
 
@@ -123,8 +123,9 @@ struct SlamBackEndOptions {
   double place_max_odometry_displacement_fraction = 0.5;
   // A node's points (what the alignments match): its scan's echoes, each moved onto the line fitted to it
   // and its neighbours in the 3 scans before and the 3 after it that odometry says were taken within 0.3 m
-  // and 0.005 rad of it (scan_fusion.h: less range noise, so less heading noise in every alignment; turns
-  // are left out, where odometry's own heading error would smear the fused echoes). Applied by the caller
+  // and 0.015 rad of it (scan_fusion.h: less range noise, so less heading noise in every alignment; the
+  // wall follower's gentle steering is in, turns are left out, where odometry's own heading error would
+  // smear the fused echoes). Applied by the caller
   // that sees every scan (TextSlam), not by AddNode. scans_before = scans_after = 0: off.
   ScanFusionOptions node_fusion = DefaultNodeFusion();
   ScanIcpOptions icp;
