@@ -28,6 +28,7 @@ const GoToRoomOptions& Validated(const GoToRoomOptions& o) {
           "min_approach_speed_mps", "must be in (0, follower.cruise_speed_mps]");
   Require(o.face_gain_per_s > 0 && std::isfinite(o.face_gain_per_s), "face_gain_per_s", "must be finite and > 0");
   Require(o.face_tolerance_rad > 0 && o.face_tolerance_rad < M_PI / 2, "face_tolerance_rad", "must be in (0, pi/2)");
+  Require(o.blocked_wait_s >= 0 && std::isfinite(o.blocked_wait_s), "blocked_wait_s", "must be finite and >= 0");
   return o;
 }
 
@@ -81,6 +82,7 @@ void GoToRoom::Start(const RoomGoal& goal) {
   remaining_m_ = 0.0;
   yaw_error_rad_ = 0.0;
   stepped_ = false;
+  blocked_since_s_.reset();
   state_ = GoToRoomState::kTurning;  // the first Step decides whether a turn is needed
 }
 
@@ -97,9 +99,11 @@ void GoToRoom::Cancel() {
 }
 
 VelocityCommand GoToRoom::Step(const std::vector<float>& ranges_m, double angle_min_rad, double angle_increment_rad,
-                               const Pose2D& pose) {
+                               const Pose2D& pose, double time_s) {
   if (!active()) return {};
-  if (!std::isfinite(pose.x_m) || !std::isfinite(pose.y_m) || !std::isfinite(pose.theta_rad)) return {};  // stop
+  if (!std::isfinite(pose.x_m) || !std::isfinite(pose.y_m) || !std::isfinite(pose.theta_rad) || !std::isfinite(time_s)) {
+    return {};  // stop
+  }
   // The corridor axis at the goal: perpendicular to the direction the robot will face (the door).
   const Vec2 axis{-std::sin(goal_.pose.theta_rad), std::cos(goal_.pose.theta_rad)};
   remaining_m_ = Dot(goal_.pose.Position() - pose.Position(), axis);
@@ -130,11 +134,11 @@ VelocityCommand GoToRoom::Step(const std::vector<float>& ranges_m, double angle_
     state_ = GoToRoomState::kDriving;
     approaching_ = true;
   }
-  return Drive(ranges_m, angle_min_rad, angle_increment_rad, travel);
+  return Drive(ranges_m, angle_min_rad, angle_increment_rad, travel, time_s);
 }
 
 VelocityCommand GoToRoom::Drive(const std::vector<float>& ranges_m, double angle_min_rad, double angle_increment_rad,
-                                const Vec2& travel) {
+                                const Vec2& travel, double time_s) {
   // The goal's wall lies in the direction of the goal's theta: on the left of the travel direction if
   // turning from `travel` to it is counter-clockwise.
   const Vec2 facing{std::cos(goal_.pose.theta_rad), std::sin(goal_.pose.theta_rad)};
@@ -151,13 +155,16 @@ VelocityCommand GoToRoom::Drive(const std::vector<float>& ranges_m, double angle
   WallFollowState follow_state;
   VelocityCommand command = follower.Command(observation, &follow_state);
   if (follow_state == WallFollowState::kEndReached) {
-    char why[160];
-    std::snprintf(why, sizeof(why), "stopped by a wall or obstacle %.2f m ahead with %.2f m still to go",
-                  observation.front_distance_m, std::fabs(remaining_m_));
+    if (!blocked_since_s_) blocked_since_s_ = time_s;
+    if (time_s - *blocked_since_s_ < options_.blocked_wait_s) return {};  // a stop: wait for it to clear
+    char why[192];
+    std::snprintf(why, sizeof(why), "stopped by a wall or obstacle %.2f m ahead for %.1f s with %.2f m still to go",
+                  observation.front_distance_m, time_s - *blocked_since_s_, std::fabs(remaining_m_));
     reason_ = why;
     state_ = GoToRoomState::kFailed;
     return {};
   }
+  blocked_since_s_.reset();
   const double remaining = std::fabs(remaining_m_);
   command.linear_mps =
       std::min(command.linear_mps, std::max(options_.min_approach_speed_mps, options_.approach_gain_per_s * remaining));

@@ -281,7 +281,8 @@ class GoToRoomNodelet : public nodelet::Nodelet {
     }
     if (on_grid) return StepOnGrid(*scan, yaw_in_base, *pose);
     const VelocityCommand cmd =
-        controller_->Step(scan->ranges, scan->angle_min + yaw_in_base, scan->angle_increment, *pose);
+        controller_->Step(scan->ranges, scan->angle_min + yaw_in_base, scan->angle_increment, *pose,
+                          scan->header.stamp.toSec());
     cmd_pub_.publish(ToTwistMsg(cmd));  // a zero command once the goal ends
     const std::string status = controller_->Status();
     if (controller_->state() == GoToRoomState::kFailed) NODELET_ERROR("go to room %s", status.c_str());

@@ -80,6 +80,10 @@ const ParamTable<GoToRoomNodeOptions>& GoToRoomParamTable() {
                "turning to face the door: angular speed = gain × yaw error", r::Positive()),
       Param<O>("face_tolerance_rad", DOORPLATE_PARAM_FIELD(controller.face_tolerance_rad),
                "`arrived` within this yaw error", r::Positive()),
+      Param<O>("blocked_wait_s", DOORPLATE_PARAM_FIELD(controller.blocked_wait_s),
+               "something within end_stop_distance_m ahead fails the goal only if it is still there after this "
+               "long (a person walking past clears); 0: at once",
+               r::NonNegative()),
       Param<O>("global_frame_id", DOORPLATE_PARAM_FIELD(global_frame_id),
                "the localizer's frame (amcl's name): the pose is tf `global_frame_id → base_frame_id`",
                r::FrameId())

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "../sim/test_worlds.h"
@@ -52,7 +53,8 @@ DriveRun Drive(Simulator* sim, GoToRoom* go, bool use_odometry, double max_time_
     if (step % 10 == 0) {
       const LaserScan scan = sim->Scan();
       const Pose2D pose = use_odometry ? sim->odom_pose() : sim->true_pose();
-      const VelocityCommand cmd = go->Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, pose);
+      const VelocityCommand cmd =
+          go->Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, pose, sim->time_s());
       if (go->state() != run.states.back()) run.states.push_back(go->state());
       if (!go->active()) break;
       sim->SetCommand(cmd.linear_mps, cmd.angular_rps);
@@ -107,7 +109,7 @@ TEST(GoToRoom, TurnsAroundFirstWhenTheGoalIsBehind) {
   go.Start(*plan.goal);
   GoToRoomState first = go.state();
   const std::vector<float> no_scan;
-  const VelocityCommand turn = go.Step(no_scan, 0.0, 0.01, sim.true_pose());
+  const VelocityCommand turn = go.Step(no_scan, 0.0, 0.01, sim.true_pose(), 0.0);
   EXPECT_EQ(first, GoToRoomState::kTurning);
   EXPECT_EQ(go.state(), GoToRoomState::kTurning);
   EXPECT_EQ(turn.linear_mps, 0.0);  // in place
@@ -179,6 +181,45 @@ TEST(GoToRoom, FailsWhenTheCorridorEndsBeforeTheGoal) {
   EXPECT_EQ(go.Status().rfind("failed: room 999: stopped by a wall", 0), 0u) << go.Status();
 }
 
+// Someone stands 0.4 m before the robot from 3 s after the start until `until_s` (the beams within ±20° of
+// straight ahead end on them). Returns the final state and the time it was reached.
+std::pair<GoToRoomState, double> DriveWithSomeoneAhead(double until_s, std::string* reason) {
+  Simulator sim(PlateCorridor(), SimulatorOptions{});
+  sim.Teleport({0.6, 0.6, 0.0});
+  GoToRoom go(GoToRoomOptions{});
+  const RoomGoalResult plan = Planner().Plan("103", sim.true_pose());
+  go.Start(*plan.goal);
+  for (int step = 0; sim.time_s() < 120.0 && go.active(); ++step) {
+    if (step % 10 == 0) {
+      LaserScan scan = sim.Scan();
+      if (sim.time_s() >= 3.0 && sim.time_s() < until_s) {
+        for (std::size_t i = 0; i < scan.ranges_m.size(); ++i) {
+          const double a = scan.angle_min_rad + static_cast<double>(i) * scan.angle_increment_rad;
+          if (std::fabs(NormalizeAngle(a)) < 0.35) scan.ranges_m[i] = 0.4f;
+        }
+      }
+      const VelocityCommand cmd =
+          go.Step(scan.ranges_m, scan.angle_min_rad, scan.angle_increment_rad, sim.true_pose(), sim.time_s());
+      sim.SetCommand(cmd.linear_mps, cmd.angular_rps);
+    }
+    sim.Step();
+  }
+  *reason = go.reason();
+  return {go.state(), sim.time_s()};
+}
+
+// A demo on the realistic corridor failed its goal the moment a person walked past in front of the robot: the
+// robot now stops and waits blocked_wait_s (10 s) before something ahead fails the goal.
+TEST(GoToRoom, SomeoneWhoWalksPastIsWaitedForAndSomeoneWhoStaysFailsTheGoal) {
+  std::string reason;
+  EXPECT_EQ(DriveWithSomeoneAhead(8.0, &reason).first, GoToRoomState::kArrived) << reason;
+  const auto [state, time_s] = DriveWithSomeoneAhead(1e9, &reason);
+  EXPECT_EQ(state, GoToRoomState::kFailed);
+  EXPECT_NEAR(time_s, 13.0, 0.5);  // blocked at 3 s, failed blocked_wait_s later
+  EXPECT_EQ(reason.rfind("stopped by a wall or obstacle 0.", 0), 0u) << reason;
+  EXPECT_NE(reason.find(" m ahead for 10.1 s with "), std::string::npos) << reason;
+}
+
 TEST(GoToRoom, ARefusedRequestKeepsItsReasonAndCommandsNothing) {
   GoToRoom go(GoToRoomOptions{});
   EXPECT_EQ(go.Status(), "idle");
@@ -188,7 +229,7 @@ TEST(GoToRoom, ARefusedRequestKeepsItsReasonAndCommandsNothing) {
   EXPECT_EQ(go.state(), GoToRoomState::kRefused);
   EXPECT_EQ(go.Status(), "refused: room 999 is not in the text map plates; known rooms: 101, 102, 103, 104, 106");
   const std::vector<float> ranges(360, 1.0f);
-  const VelocityCommand cmd = go.Step(ranges, -M_PI, 2 * M_PI / 360, Pose2D{});
+  const VelocityCommand cmd = go.Step(ranges, -M_PI, 2 * M_PI / 360, Pose2D{}, 0.0);
   EXPECT_EQ(cmd.linear_mps, 0.0);
   EXPECT_EQ(cmd.angular_rps, 0.0);
 }
@@ -199,9 +240,9 @@ TEST(GoToRoom, ANonFinitePoseStopsTheRobotWithoutEndingTheGoal) {
   ASSERT_TRUE(plan.goal);
   go.Start(*plan.goal);
   const std::vector<float> ranges(360, 1.0f);
-  const VelocityCommand turn = go.Step(ranges, -M_PI, 2 * M_PI / 360, Pose2D{1.0, 0.6, M_PI});
+  const VelocityCommand turn = go.Step(ranges, -M_PI, 2 * M_PI / 360, Pose2D{1.0, 0.6, M_PI}, 0.0);
   EXPECT_NE(turn.angular_rps, 0.0);  // turning towards 104, ahead in +x
-  const VelocityCommand stop = go.Step(ranges, -M_PI, 2 * M_PI / 360, Pose2D{std::nan(""), 0.6, 0.0});
+  const VelocityCommand stop = go.Step(ranges, -M_PI, 2 * M_PI / 360, Pose2D{std::nan(""), 0.6, 0.0}, 0.0);
   EXPECT_EQ(stop.linear_mps, 0.0);
   EXPECT_EQ(stop.angular_rps, 0.0);
   EXPECT_EQ(go.state(), GoToRoomState::kTurning);
@@ -219,6 +260,9 @@ TEST(GoToRoom, InvalidOptionsNameTheField) {
   options = GoToRoomOptions{};
   options.follower.wall_distance_m = 0.0;
   EXPECT_THROW(GoToRoom go(options), std::invalid_argument);  // the follower's own check
+  options = GoToRoomOptions{};
+  options.blocked_wait_s = -1.0;
+  EXPECT_THROW(GoToRoom go(options), std::invalid_argument);
 }
 
 }  // namespace

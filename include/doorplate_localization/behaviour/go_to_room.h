@@ -8,7 +8,8 @@
 // Sequence: kTurning (in place, towards the goal, when it lies more than align_tolerance_rad off the heading,
 // e.g. behind; again while driving when the heading gets 2 align_tolerance_rad off, e.g. after an overshoot)
 // → kDriving (wall following, slowing down near the goal) → kFacing (in place, to the goal's
-// theta) → kArrived. kFailed when the wall follower stops at a wall or obstacle ahead before the goal.
+// theta) → kArrived. kFailed when the wall follower stops at a wall or obstacle ahead before the goal and it
+// is still there after blocked_wait_s (a person walking past clears; a corridor's end does not).
 // kRefused when the caller refuses a request (Refuse()): the planner's reason is kept for the status.
 //
 // Along-corridor coordinate: the goal's position projected on the corridor axis, i.e. the direction
@@ -16,6 +17,7 @@
 // follower's, converged to wall_distance_m after a few metres of driving).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +44,10 @@ struct GoToRoomOptions {
   double min_approach_speed_mps = 0.05;  //   but at least this
   double face_gain_per_s = 2.0;          // facing the door: angular speed = gain * yaw error, <= turn_speed_rps
   double face_tolerance_rad = 0.05;      // facing ends (kArrived) within this of the goal's theta
+  // Something within follower.end_stop_distance_m ahead while driving: stop, and fail the goal only if it is
+  // still there after this long (0: at once). A demo on the realistic corridor failed its goal the moment a
+  // person walked past in front of the robot.
+  double blocked_wait_s = 10.0;
 };
 
 enum class GoToRoomState { kIdle, kTurning, kDriving, kFacing, kArrived, kRefused, kFailed };
@@ -61,12 +67,13 @@ class GoToRoom {
   // Drops the goal: kIdle, zero commands.
   void Cancel();
 
-  // One control step with the laser scan (base_link, as WallFollower::Observe) and base_link's pose in the
-  // goal's frame at the scan's time. Returns the command to apply until the next step; zero unless the
-  // state after the step is kTurning, kDriving or kFacing, and zero (a stop, state unchanged) for a pose
-  // with a non-finite value.
+  // One control step with the laser scan (base_link, as WallFollower::Observe), base_link's pose in the
+  // goal's frame at the scan's time and that time (seconds, any monotonic clock: it times blocked_wait_s).
+  // Returns the command to apply until the next step; zero unless the state after the step is kTurning,
+  // kDriving or kFacing, zero while it waits before something ahead, and zero (a stop, state unchanged) for
+  // a pose or time with a non-finite value.
   VelocityCommand Step(const std::vector<float>& ranges_m, double angle_min_rad, double angle_increment_rad,
-                       const Pose2D& pose);
+                       const Pose2D& pose, double time_s);
 
   GoToRoomState state() const { return state_; }
   bool active() const;  // kTurning, kDriving or kFacing
@@ -83,7 +90,7 @@ class GoToRoom {
 
  private:
   VelocityCommand Drive(const std::vector<float>& ranges_m, double angle_min_rad, double angle_increment_rad,
-                        const Vec2& travel);
+                        const Vec2& travel, double time_s);
 
   const GoToRoomOptions options_;
   const WallFollower left_follower_, right_follower_;      // the goal's wall on the left / right
@@ -95,6 +102,7 @@ class GoToRoom {
   double remaining_m_ = 0.0;
   double yaw_error_rad_ = 0.0;
   bool stepped_ = false;  // Step ran since Start: remaining_m_ is known
+  std::optional<double> blocked_since_s_;  // stopped before something ahead since then
 };
 
 }  // namespace doorplate_localization
