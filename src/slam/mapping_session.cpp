@@ -112,7 +112,7 @@ void MappingSession::ProcessScan(const WaitingScan& taken, MappingUpdate* update
     if (next_periodic_solve_wall_s_ && wall_clock_() < *next_periodic_solve_wall_s_) {
       ++counters_.solves_deferred;
     } else {
-      update->solved = Solve().solved || update->solved;
+      update->solved = SolveNow(/*periodic=*/true).solved || update->solved;
     }
   }
 }
@@ -239,11 +239,13 @@ bool MappingSession::ApplyPlate(double stamp_s, const Pose2D& base_in_odom, cons
   return used;
 }
 
-MappingUpdate MappingSession::Solve() {
+MappingUpdate MappingSession::Solve() { return SolveNow(/*periodic=*/false); }
+
+MappingUpdate MappingSession::SolveNow(bool periodic) {
   MappingUpdate update;
   if (!started()) return update;
   const double start_s = wall_clock_();
-  slam_.Solve();
+  slam_.Solve(periodic);
   last_solve_stamp_s_ = last_processed_stamp_s_;
   map_ = slam_.BuildOccupancyGrid();
   text_map_ = slam_.BuildTextMap();

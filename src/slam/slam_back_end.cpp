@@ -213,18 +213,24 @@ bool SlamBackEnd::PlatesCloseALoop() const {
   return false;
 }
 
-SlamBackEndResult SlamBackEnd::Optimize(const std::vector<Pose2D>& front_end_history) const {
+SlamBackEndResult SlamBackEnd::Optimize(const std::vector<Pose2D>& front_end_history, int pending_node) const {
   SlamBackEndResult result;
   const int n = num_nodes();
   if (n == 0) return result;
-  ++solves_;
   if (options_.front_end_history_sigma_m > 0 && static_cast<int>(front_end_history.size()) != n) {
     throw std::invalid_argument("SlamBackEnd::Optimize: front_end_history has " +
                                 std::to_string(front_end_history.size()) + " poses for " + std::to_string(n) +
                                 " nodes (front_end_history_sigma_m > 0 needs one per node)");
   }
+  if (pending_node != -1 && (pending_node < sequential_done_ || pending_node >= n)) {
+    throw std::invalid_argument("SlamBackEnd::Optimize: pending_node " + std::to_string(pending_node) +
+                                " is not a node of " + std::to_string(n) + " still unaligned (from " +
+                                std::to_string(sequential_done_) + ")");
+  }
+  ++solves_;
+  const int aligned_end = pending_node == -1 ? n : pending_node;  // nodes [0, aligned_end) take alignments
   // Sequential alignments: node j against nodes j-1, j-2, j-4, ... (odometry as the starting guess).
-  for (int j = sequential_done_; j < n; ++j) {
+  for (int j = sequential_done_; j < aligned_end; ++j) {
     for (int offset = 1; offset <= options_.max_sequential_offset && j - offset >= 0; offset *= 2) {
       const int i = j - offset;
       if (!nodes_[i].has_points || !nodes_[j].has_points || HistoryHolds(i, j)) continue;
@@ -233,7 +239,7 @@ SlamBackEndResult SlamBackEnd::Optimize(const std::vector<Pose2D>& front_end_his
       if (const std::optional<PoseEdge> edge = Align(i, j, initial, false)) sequential_edges_.push_back(*edge);
     }
   }
-  sequential_done_ = n;
+  sequential_done_ = std::max(sequential_done_, aligned_end);
 
   std::map<int, int> landmark_of_plate;
   PoseGraph graph = BaseGraph(&landmark_of_plate, front_end_history);
@@ -267,8 +273,8 @@ SlamBackEndResult SlamBackEnd::Optimize(const std::vector<Pose2D>& front_end_his
   // only_pinned: front-end proposals (trusted nodes only, and only for nodes without a closure yet).
   const auto close_loops = [&](const auto& pose_of, bool only_pinned) {
     int added = 0;
-    const std::vector<std::vector<int>> candidates = LoopClosureCandidates(n, pose_of);
-    for (int j = 0; j < n; ++j) {
+    const std::vector<std::vector<int>> candidates = LoopClosureCandidates(aligned_end, pose_of);
+    for (int j = 0; j < aligned_end; ++j) {
       if (only_pinned && !front_end_first && has_closure[j]) continue;
       int closed_here = 0;
       for (int i : candidates[j]) {

@@ -93,14 +93,14 @@ void TextSlam::FinishNodeAwaitingScans() {
   if (node_fusion_.Remembered(scan_id)) back_end_.ReplaceNodePoints(node, node_fusion_.Fuse(scan_id));
 }
 
-void TextSlam::Solve() {
+void TextSlam::Solve(bool periodic) {
   if (!options_.back_end.enabled || back_end_.num_nodes() == 0) return;
-  FinishNodeAwaitingScans();
+  if (!periodic) FinishNodeAwaitingScans();
   std::vector<Pose2D> history;
   if (options_.back_end.front_end_history_sigma_m > 0) {
     for (const TrajectoryPoint& p : slam_.MeanTrajectory()) history.push_back(p.pose);
   }
-  solved_ = back_end_.Optimize(history);
+  solved_ = back_end_.Optimize(history, node_awaiting_scans_ ? node_awaiting_scans_->first : -1);
 }
 
 int TextSlam::nodes_since_solve() const {

@@ -28,12 +28,6 @@ PlateReading Sighting(const std::string& text, double bearing_rad, std::optional
   return s;
 }
 
-// A 40 m corridor with end walls.
-std::vector<Segment> ClosedCorridor() {
-  return {{{-0.525, -1.025}, {40.525, -1.025}}, {{-0.525, 1.025}, {40.525, 1.025}},
-          {{-0.525, -1.025}, {-0.525, 1.025}}, {{40.525, -1.025}, {40.525, 1.025}}};
-}
-
 // Drives the closed corridor (odometry 2 % long), one scan per 0.5 m and 1 s, a plate read half-way.
 // `between` is called after every input (to poke getters in).
 template <typename Between>
@@ -41,7 +35,7 @@ void DriveCorridor(MappingSession* session, Between between) {
   double t = 0.0;
   for (const Pose2D& truth : test::PosesAlongX(0.0, 20.0, 0.5)) {
     const Pose2D odometry{1.02 * truth.x_m, 0.0, 0.0};
-    session->AddScan(t, odometry, test::Scan(ClosedCorridor(), truth, 360, 16.0));
+    session->AddScan(t, odometry, test::Scan(test::ClosedCorridor(), truth, 360, 16.0));
     between();
     if (truth.x_m == 10.0) {
       session->AddPlates(t + 0.1, odometry, {Sighting("120", M_PI / 2)});
@@ -307,54 +301,6 @@ TEST(MappingSession, GettersCalledInAnyOrderAndNumberChangeNoResult) {
   EXPECT_EQ(quiet.Map()->cells, poked.Map()->cells);
   EXPECT_EQ(TextMapToYaml(quiet.GetTextMap()), TextMapToYaml(poked.GetTextMap()));
   EXPECT_EQ(quiet.MapToOdom()->x_m, poked.MapToOdom()->x_m);
-}
-
-TEST(MappingSession, MapUpdateIntervalSolvesAfterProcessedScansThatFarApartInStampTime) {
-  MappingSessionOptions o = FewParticles(3);
-  o.map_update_interval_s = 4.0;
-  MappingSession session(o);
-  int solves = 0;
-  double t = 0.0;
-  for (const Pose2D& p : test::PosesAlongX(0.0, 5.0, 0.5)) {  // one processed scan per second, 0..10 s
-    const MappingUpdate u = session.AddScan(t, p, test::Scan(ClosedCorridor(), p, 360, 16.0));
-    ASSERT_TRUE(u.scan_processed);
-    if (u.solved) {
-      ++solves;
-      EXPECT_TRUE(t == 0.0 || t == 4.0 || t == 8.0) << t;
-      EXPECT_EQ(session.slam().nodes_since_solve(), 0);
-    }
-    t += 1.0;
-  }
-  EXPECT_EQ(solves, 3);
-  ASSERT_TRUE(session.Map().has_value());
-}
-
-TEST(MappingSession, ASolveShareDefersPeriodicSolvesByWallClockAndLeavesTheFinalSolveAsIs) {
-  MappingSessionOptions o = FewParticles(3);
-  o.map_update_interval_s = 4.0;
-  MappingSession free_running(o);
-  o.map_update_max_solve_share = 0.25;
-  MappingSession shared(o);
-  double now = 0.0;
-  shared.SetWallClock([&now] { return now++; });  // every reading of the clock takes 1 s: a solve takes 1 s
-  std::vector<double> solved_at;
-  double t = 0.0;
-  for (const Pose2D& p : test::PosesAlongX(0.0, 5.0, 0.5)) {  // one processed scan per second, 0..10 s
-    const LaserScan scan = test::Scan(ClosedCorridor(), p, 360, 16.0);
-    free_running.AddScan(t, p, scan);
-    if (shared.AddScan(t, p, scan).solved) solved_at.push_back(t);
-    t += 1.0;
-  }
-  // t = 0 solves (1 s), so the next waits 3 s of wall clock: due at t = 4 and 5 but deferred, solved at 6;
-  // due again at 10, deferred.
-  EXPECT_EQ(solved_at, (std::vector<double>{0.0, 6.0}));
-  EXPECT_EQ(shared.counters().solves_deferred, 3);
-  EXPECT_EQ(shared.counters().last_solve_wall_s, 1.0);
-  EXPECT_EQ(free_running.counters().solves, 3);
-  // The filter never saw the solves: the final solve gives the same map either way.
-  ASSERT_TRUE(free_running.Solve().solved && shared.Solve().solved);
-  EXPECT_EQ(free_running.Map()->cells, shared.Map()->cells);
-  EXPECT_EQ(free_running.Trajectory().back().x_m, shared.Trajectory().back().x_m);
 }
 
 TEST(MappingSession, BadOptionsThrowNamingTheField) {

@@ -73,6 +73,25 @@ TEST(SlamBackEnd, NodePointsCanBeReplacedUntilAnAlignmentUsedThem) {
   EXPECT_THROW(back_end.ReplaceNodePoints(1, {}), std::logic_error);
 }
 
+// A solve in the middle of a run leaves a node whose points are still being refined (pending_node) out of
+// the alignments: its points can still be replaced, and the next solve aligns it.
+TEST(SlamBackEnd, APendingNodeTakesNoAlignmentUntilTheNextSolve) {
+  SlamBackEnd back_end(SlamBackEndOptions{});
+  back_end.AddNode(PointsAt(Corridor40(), {1, 0, 0}), {1, 0, 0}, {1, 0, 0});
+  back_end.AddNode(PointsAt(Corridor40(), {1.5, 0.02, 0}), {1.5, 0, 0}, {1.5, 0, 0});  // rough points
+  const SlamBackEndResult first = back_end.Optimize({}, /*pending_node=*/1);
+  EXPECT_EQ(first.alignment_edges, 0);
+  ASSERT_EQ(first.poses.size(), 2u);  // in the graph all the same (odometry holds it)
+  EXPECT_NEAR(first.poses[1].x_m, 1.5, 1e-6);
+  back_end.ReplaceNodePoints(1, PointsAt(Corridor40(), {1.5, 0, 0}));  // refined: no logic_error
+  const SlamBackEndResult second = back_end.Optimize();
+  EXPECT_GE(second.alignment_edges, 1);
+  EXPECT_NEAR(second.poses[1].y_m, 0.0, 0.005);  // aligned with the refined points
+  EXPECT_THROW(back_end.ReplaceNodePoints(1, {}), std::logic_error);
+  EXPECT_THROW(back_end.Optimize({}, /*pending_node=*/1), std::invalid_argument);  // aligned already
+  EXPECT_THROW(back_end.Optimize({}, /*pending_node=*/2), std::invalid_argument);  // no such node
+}
+
 TEST(SlamBackEnd, APlateReadFromTwoNodesBecomesOneLandmarkAtItsPlace) {
   SlamBackEnd back_end{SlamBackEndOptions{}};
   const std::vector<Pose2D> truth = RoomRun();

@@ -25,6 +25,12 @@ inline std::vector<Segment> Room() {
 // A featureless corridor 2 m wide along x, far longer than the laser's range.
 inline std::vector<Segment> Corridor() { return {{{-100, -1.025}, {100, -1.025}}, {{-100, 1.025}, {100, 1.025}}}; }
 
+// A 40 m corridor 2 m wide along x from x = 0, with end walls.
+inline std::vector<Segment> ClosedCorridor() {
+  return {{{-0.525, -1.025}, {40.525, -1.025}}, {{-0.525, 1.025}, {40.525, 1.025}},
+          {{-0.525, -1.025}, {-0.525, 1.025}}, {{40.525, -1.025}, {40.525, 1.025}}};
+}
+
 // Poses every `step_m` along x from `from_m` to `to_m`, heading 0: enough views that a map of a
 // corridor holds its walls as continuous lines.
 inline std::vector<Pose2D> PosesAlongX(double from_m, double to_m, double step_m) {

@@ -53,7 +53,9 @@
 //    solve also waits until the wall clock says the solves so far took at most that share of the time: after
 //    a solve of d wall seconds the next periodic one waits d·(1/share − 1) wall seconds (counted in
 //    solves_deferred per processed scan that found it due but waiting). Solves change only the outputs
-//    (Map, GetTextMap, MapToOdom), never the filter, so the final Solve() is the same either way.
+//    (Map, GetTextMap, MapToOdom), never the filter nor what the back end's nodes are made of (a periodic
+//    solve leaves the newest node's fusion waiting for its scans: TextSlam::Solve), so the final Solve()
+//    is the same to the bit with or without periodic ones.
 //  - map -> odom = estimate ∘ (odometry)⁻¹ at the last processed scan (TextSlam::EstimatedPose: the last
 //    solve's newest node ⊕ odometry since, else the best particle), recomputed after every processed
 //    scan, used plate and Solve().
@@ -210,6 +212,8 @@ class MappingSession {
   std::string RefuseOrderedScan(double stamp_s) const;
   // The filter's update with a taken scan, then the solve rule.
   void ProcessScan(const WaitingScan& taken, MappingUpdate* update);
+  // Solve(); `periodic`: a solve of map_update_interval_s (TextSlam::Solve's periodic).
+  MappingUpdate SolveNow(bool periodic);
   // camera_wait_s > 0: sends on every waiting scan the camera has reported up to (all with `flush`), each
   // after the held sightings stamped before it.
   void SendWaitingScans(bool flush, MappingUpdate* update);

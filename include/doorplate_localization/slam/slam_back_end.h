@@ -182,7 +182,11 @@ class SlamBackEnd {
   // `front_end_history`: per node, the front end's pose as its trajectory estimate at this moment has it (the
   // filter's posterior mean, map frame); used with front_end_history_sigma_m > 0, and then it must hold one
   // pose per node (else std::invalid_argument).
-  SlamBackEndResult Optimize(const std::vector<Pose2D>& front_end_history = {}) const;
+  // `pending_node` (-1: none): a node whose points ReplaceNodePoints will still refine (node fusion waiting
+  // for the scans after it). It and the nodes after it take no alignment in this solve (odometry and plates
+  // hold them; the next solve aligns them), so a solve in the middle of a run changes nothing the final one
+  // computes. Must be -1 or a node not aligned yet (else std::invalid_argument).
+  SlamBackEndResult Optimize(const std::vector<Pose2D>& front_end_history = {}, int pending_node = -1) const;
   int num_nodes() const { return static_cast<int>(nodes_.size()); }
   // Nodes added without their points (mapped ground), and those of them aligned with their place's node.
   int nodes_on_mapped_ground() const { return nodes_on_mapped_ground_; }

@@ -92,7 +92,11 @@ class TextSlam {
 
   // Solves the back end's graph over every node and plate reading so far and keeps the result for the
   // getters below (no-op with the back end off or before the first scan). The only call that solves.
-  void Solve();
+  // A node whose fused points still wait for the scans after it (back_end.node_fusion.scans_after) is
+  // finished with the scans so far, unless `periodic` (a solve while the run goes on): then it keeps
+  // waiting and takes no alignment in this solve (SlamBackEnd::Optimize's pending_node), so periodic solves
+  // leave the final solve exactly as it would be without them.
+  void Solve(bool periodic = false);
 
   // The map (map_server-ready: -1 unknown, 0 free, 100 occupied): every processed scan rendered at
   // Trajectory()'s poses when the back end is on and was solved, else the best particle's map. Renders
