@@ -43,7 +43,7 @@ if(mrpt-obs_FOUND)
 endif()
 
 if(CATKIN_ENABLE_TESTING)
-  foreach(name carmen_reader correlative_search tiled_grid scan_matcher trajectory_tree rbpf_slam rbpf_slam_options text_slam mapping_session mapping_session_stamp_order mapping_session_solve pose_graph scan_fusion scan_icp slam_back_end slam_back_end_mapped_ground slam_back_end_options)
+  foreach(name carmen_reader correlative_search tiled_grid scan_matcher trajectory_tree rbpf_slam rbpf_slam_options text_slam mapping_session mapping_session_stamp_order mapping_session_solve pose_graph scan_fusion scan_icp slam_back_end slam_back_end_mapped_ground slam_back_end_outlier slam_back_end_options)
     doorplate_add_core_test(${name}_test test/slam/${name}_test.cpp doorplate_slam)
   endforeach()
 endif()

@@ -112,7 +112,7 @@ void MappingSession::ProcessScan(const WaitingScan& taken, MappingUpdate* update
     if (next_periodic_solve_wall_s_ && wall_clock_() < *next_periodic_solve_wall_s_) {
       ++counters_.solves_deferred;
     } else {
-      update->solved = SolveNow(/*periodic=*/true).solved || update->solved;
+      update->solved = Solve().solved || update->solved;
     }
   }
 }
@@ -152,6 +152,7 @@ MappingUpdate MappingSession::Flush() {
   MappingUpdate update;
   SendWaitingScans(/*flush=*/true, &update);
   ApplyHeldBefore(std::nullopt, &update);
+  slam_.FinishInput();  // the last node's fusion waits for no more scans
   if (update.scan_processed || !update.plates.empty()) RefreshMapToOdom(&update);
   return update;
 }
@@ -239,13 +240,11 @@ bool MappingSession::ApplyPlate(double stamp_s, const Pose2D& base_in_odom, cons
   return used;
 }
 
-MappingUpdate MappingSession::Solve() { return SolveNow(/*periodic=*/false); }
-
-MappingUpdate MappingSession::SolveNow(bool periodic) {
+MappingUpdate MappingSession::Solve() {
   MappingUpdate update;
   if (!started()) return update;
   const double start_s = wall_clock_();
-  slam_.Solve(periodic);
+  slam_.Solve();
   last_solve_stamp_s_ = last_processed_stamp_s_;
   map_ = slam_.BuildOccupancyGrid();
   text_map_ = slam_.BuildTextMap();

@@ -109,6 +109,7 @@ const TextField kTextFields[] = {
     {"back_end.front_end_pinned_neighbours", nullptr, [](T& o) { return &o.back_end.front_end_pinned_neighbours; }},
     {"back_end.loop_closure_max_residual_sigmas", [](T& o) { return &o.back_end.loop_closure_max_residual_sigmas; }},
     {"back_end.loop_closure_check_rounds", nullptr, [](T& o) { return &o.back_end.loop_closure_check_rounds; }},
+    {"back_end.sequential_max_residual_sigmas", [](T& o) { return &o.back_end.sequential_max_residual_sigmas; }},
     {"back_end.loop_closure_proposal_order", nullptr, [](T& o) { return &o.back_end.loop_closure_proposal_order; }},
     {"back_end.max_nodes_per_place", nullptr, [](T& o) { return &o.back_end.max_nodes_per_place; }},
     {"back_end.place_radius_m", [](T& o) { return &o.back_end.place_radius_m; }},

@@ -129,7 +129,8 @@ std::optional<PoseEdge> SlamBackEnd::Align(int from, int to, const Pose2D& initi
   edge.to = to;
   edge.measurement = r.relative;
   edge.information = r.information;
-  edge.robust = loop_closure;
+  // Huber beyond huber_sigmas, sequential too: a false match cannot pull the solution onto itself (slam_back_end.h).
+  edge.robust = true;
   return edge;
 }
 
@@ -148,7 +149,8 @@ std::optional<PoseEdge> SlamBackEnd::AlignLoopClosure(int from, int to, const Po
   return remembered.edge;
 }
 
-PoseGraph SlamBackEnd::BaseGraph(std::map<int, int>* landmark_of_plate, const std::vector<Pose2D>& history) const {
+PoseGraph SlamBackEnd::BaseGraph(std::map<int, int>* landmark_of_plate, const std::vector<Pose2D>& history,
+                                 const std::vector<bool>& sequential_kept) const {
   PoseGraph graph;
   for (const Node& node : nodes_) graph.AddNode(node.front_end);
   const bool use_history = options_.front_end_history_sigma_m > 0;  // Optimize checked the size
@@ -173,7 +175,9 @@ PoseGraph SlamBackEnd::BaseGraph(std::map<int, int>* landmark_of_plate, const st
       graph.AddEdge(edge);
     }
   }
-  for (const PoseEdge& edge : sequential_edges_) graph.AddEdge(edge);  // none where the history holds
+  for (std::size_t k = 0; k < sequential_edges_.size(); ++k) {  // none where the history holds
+    if (sequential_kept.at(k)) graph.AddEdge(sequential_edges_[k]);
+  }
   for (const PoseEdge& edge : anchor_edges_) graph.AddEdge(edge);
   landmark_of_plate->clear();
   for (const PlateReading& reading : plates_) {
@@ -242,7 +246,8 @@ SlamBackEndResult SlamBackEnd::Optimize(const std::vector<Pose2D>& front_end_his
   sequential_done_ = std::max(sequential_done_, aligned_end);
 
   std::map<int, int> landmark_of_plate;
-  PoseGraph graph = BaseGraph(&landmark_of_plate, front_end_history);
+  std::vector<bool> sequential_kept(sequential_edges_.size(), true);
+  PoseGraph graph = BaseGraph(&landmark_of_plate, front_end_history, sequential_kept);
   result.alignment_edges = static_cast<int>(sequential_edges_.size());
   result.plate_readings = static_cast<int>(plates_.size());
   result.nodes_on_mapped_ground = nodes_on_mapped_ground_;
@@ -303,26 +308,40 @@ SlamBackEndResult SlamBackEnd::Optimize(const std::vector<Pose2D>& front_end_his
   const auto solve_with_loops = [&](std::vector<PoseEdge> kept) {
     result.loop_closures_dropped += static_cast<int>(loops.size() - kept.size());
     loops = std::move(kept);
-    graph = BaseGraph(&landmark_of_plate, front_end_history);
+    graph = BaseGraph(&landmark_of_plate, front_end_history, sequential_kept);
     for (const PoseEdge& edge : loops) graph.AddEdge(edge);
     result.summary = graph.Optimize(options_.graph);
   };
+  // The sequential alignments are checked alike (sequential_max_residual_sigmas): those missed by more are
+  // left out of this solve's graph (they stay cached: the next solve checks them again).
   const double gate = options_.loop_closure_max_residual_sigmas * options_.loop_closure_max_residual_sigmas;
-  const auto check_loops = [&] {
-    for (int round = 0; round < options_.loop_closure_check_rounds && gate > 0; ++round) {
+  const double sequential_gate = options_.sequential_max_residual_sigmas * options_.sequential_max_residual_sigmas;
+  const auto check_alignments = [&] {
+    for (int round = 0; round < options_.loop_closure_check_rounds && (gate > 0 || sequential_gate > 0); ++round) {
       std::vector<PoseEdge> kept;
       for (const PoseEdge& edge : loops) {
-        if (graph.SquaredResidual(edge) <= gate) kept.push_back(edge);
+        if (!(gate > 0) || graph.SquaredResidual(edge) <= gate) kept.push_back(edge);
       }
-      if (kept.size() == loops.size()) return;
+      bool sequential_dropped = false;
+      for (std::size_t k = 0; k < sequential_edges_.size() && sequential_gate > 0; ++k) {
+        if (sequential_kept[k] && graph.SquaredResidual(sequential_edges_[k]) > sequential_gate) {
+          sequential_kept[k] = false;
+          sequential_dropped = true;
+          ++result.sequential_alignments_dropped;
+        }
+      }
+      if (kept.size() == loops.size() && !sequential_dropped) return;
       solve_with_loops(std::move(kept));
     }
+  };
+  const auto solve_and_check = [&] {
+    result.summary = graph.Optimize(options_.graph);
+    check_alignments();
   };
   // Each closes loops where its poses say, then (if it added any) solves and checks; true if it added any.
   const auto close_and_solve = [&](const auto& pose_of, bool only_pinned) {
     if (close_loops(pose_of, only_pinned) == 0) return false;
-    result.summary = graph.Optimize(options_.graph);
-    check_loops();
+    solve_and_check();
     return true;
   };
   const auto close_at_solved = [&] {
@@ -334,10 +353,10 @@ SlamBackEndResult SlamBackEnd::Optimize(const std::vector<Pose2D>& front_end_his
     return close_and_solve([&](int i) -> const Pose2D& { return nodes_[i].front_end; }, true);
   };
   if (front_end_first) {
-    if (!close_at_front_end()) result.summary = graph.Optimize(options_.graph);
+    if (!close_at_front_end()) solve_and_check();
     close_at_solved();
   } else {
-    result.summary = graph.Optimize(options_.graph);
+    solve_and_check();
     close_at_solved();
     close_at_front_end();
     close_at_solved();
@@ -361,7 +380,7 @@ SlamBackEndResult SlamBackEnd::Optimize(const std::vector<Pose2D>& front_end_his
       }
     }
     solve_with_loops(std::move(realigned));
-    check_loops();
+    check_alignments();
   }
   result.loop_closures = static_cast<int>(loops.size());
   for (auto it = loop_alignments_.begin(); it != loop_alignments_.end();) {

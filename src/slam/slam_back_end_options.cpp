@@ -24,6 +24,7 @@ const SlamBackEndOptions& ValidatedSlamBackEndOptions(const SlamBackEndOptions& 
   if (o.front_end_pinned_neighbours < 0) fail("front_end_pinned_neighbours: must be >= 0");
   if (!(o.loop_closure_max_residual_sigmas >= 0)) fail("loop_closure_max_residual_sigmas: must be >= 0 (0: off)");
   if (o.loop_closure_check_rounds < 0) fail("loop_closure_check_rounds: must be >= 0");
+  if (!(o.sequential_max_residual_sigmas >= 0)) fail("sequential_max_residual_sigmas: must be >= 0 (0: off)");
   if (o.loop_closure_proposal_order < 0 || o.loop_closure_proposal_order > 2) {
     fail("loop_closure_proposal_order: must be 0 (auto), 1 (front end first) or 2 (first solve first)");
   }

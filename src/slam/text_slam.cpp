@@ -93,9 +93,10 @@ void TextSlam::FinishNodeAwaitingScans() {
   if (node_fusion_.Remembered(scan_id)) back_end_.ReplaceNodePoints(node, node_fusion_.Fuse(scan_id));
 }
 
-void TextSlam::Solve(bool periodic) {
+void TextSlam::FinishInput() { FinishNodeAwaitingScans(); }
+
+void TextSlam::Solve() {
   if (!options_.back_end.enabled || back_end_.num_nodes() == 0) return;
-  if (!periodic) FinishNodeAwaitingScans();
   std::vector<Pose2D> history;
   if (options_.back_end.front_end_history_sigma_m > 0) {
     for (const TrajectoryPoint& p : slam_.MeanTrajectory()) history.push_back(p.pose);

@@ -53,6 +53,9 @@ TEST(SlamBackEndOptions, BadOptionsThrowNamingTheField) {
   o.loop_closure_check_rounds = -1;
   ExpectThrowNaming(o, "SlamBackEndOptions.loop_closure_check_rounds");
   o = {};
+  o.sequential_max_residual_sigmas = -1;
+  ExpectThrowNaming(o, "SlamBackEndOptions.sequential_max_residual_sigmas");
+  o = {};
   o.loop_closure_proposal_order = 3;
   ExpectThrowNaming(o, "SlamBackEndOptions.loop_closure_proposal_order");
   o = {};

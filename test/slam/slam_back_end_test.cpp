@@ -148,6 +148,9 @@ TEST(SlamBackEnd, AnAlignmentFarFromItsOdometryIsDroppedAsAFalseMatch) {
   const auto run = [&](double gate_sigmas) {
     SlamBackEndOptions options;
     options.sequential_gate_sigmas = gate_sigmas;
+    // Ungated, the consistency check would drop it as well (the odometry contradicts it by ~11σ of its own
+    // information): off here, to show what the gate prevents.
+    if (gate_sigmas == 0.0) options.sequential_max_residual_sigmas = 0.0;
     SlamBackEnd back_end(options);
     for (int i = 0; i < 2; ++i) back_end.AddNode(PointsAt(test::Room(), truth[i]), odometry[i], odometry[i]);
     return back_end.Optimize();
@@ -157,9 +160,10 @@ TEST(SlamBackEnd, AnAlignmentFarFromItsOdometryIsDroppedAsAFalseMatch) {
   EXPECT_NEAR(gated.poses[1].x_m, 0.3, 0.05);  // odometry alone
   const SlamBackEndResult ungated = run(0.0);
   EXPECT_EQ(ungated.alignment_edges, 1);
-  // The laser's 0.8 m then outweighs the odometry's 0.3 m (here the laser was right; on real logs such
-  // disagreements were mostly false matches: flipped or slid scans, docs/slam.md).
-  EXPECT_GT(ungated.poses[1].x_m, 0.55);
+  // The laser's 0.8 m then pulls the node off the odometry's 0.3 m, as far as its Huber kernel lets it (here
+  // the laser was right; on real logs such disagreements were mostly false matches: flipped or slid scans,
+  // docs/slam.md).
+  EXPECT_GT(ungated.poses[1].x_m, 0.38);
 }
 
 // 30 nodes that leave node 0's place and come back to it; only the first and the last have a scan (no

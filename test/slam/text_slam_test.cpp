@@ -208,6 +208,7 @@ TEST(TextSlam, NodePointsFusedWithNeighbouringScansGiveTheSameCorridor) {
       last_node_truth = truth;
     }
   }
+  slam.FinishInput();
   slam.Solve();
   const std::optional<SlamBackEndResult> solve = slam.BackEndResult();
   ASSERT_TRUE(solve.has_value());

@@ -53,9 +53,9 @@
 //    solve also waits until the wall clock says the solves so far took at most that share of the time: after
 //    a solve of d wall seconds the next periodic one waits d·(1/share − 1) wall seconds (counted in
 //    solves_deferred per processed scan that found it due but waiting). Solves change only the outputs
-//    (Map, GetTextMap, MapToOdom), never the filter nor what the back end's nodes are made of (a periodic
-//    solve leaves the newest node's fusion waiting for its scans: TextSlam::Solve), so the final Solve()
-//    is the same to the bit with or without periodic ones.
+//    (Map, GetTextMap, MapToOdom), never the filter nor what the back end's nodes are made of (a solve
+//    leaves the newest node's fusion waiting for its scans until Flush(): TextSlam::Solve), so the final
+//    Flush() and Solve() give the same to the bit whatever solves (periodic, or the nodelet's saves) ran before.
 //  - map -> odom = estimate ∘ (odometry)⁻¹ at the last processed scan (TextSlam::EstimatedPose: the last
 //    solve's newest node ⊕ odometry since, else the best particle), recomputed after every processed
 //    scan, used plate and Solve().
@@ -156,7 +156,8 @@ class MappingSession {
   // pose; nothing of the call is kept then.
   MappingUpdate AddPlates(double stamp_s, const Pose2D& base_in_odom, const std::vector<PlateReading>& sightings);
   // The end of the input: every scan waiting for the camera goes to the filter and every held sighting is
-  // applied, in stamp order (a held sighting without a scan near its stamp gets kNoRange). Call before the
+  // applied, in stamp order (a held sighting without a scan near its stamp gets kNoRange); the newest node's
+  // fusion takes the scans so far (TextSlam::FinishInput). Call before the
   // last Solve() of a log; the nodelet calls it when it shuts down.
   MappingUpdate Flush();
   // Solves the back end (TextSlam::Solve), rebuilds Map() and GetTextMap() and recomputes MapToOdom(). Before the first processed scan it does nothing (solved stays false).
@@ -212,8 +213,6 @@ class MappingSession {
   std::string RefuseOrderedScan(double stamp_s) const;
   // The filter's update with a taken scan, then the solve rule.
   void ProcessScan(const WaitingScan& taken, MappingUpdate* update);
-  // Solve(); `periodic`: a solve of map_update_interval_s (TextSlam::Solve's periodic).
-  MappingUpdate SolveNow(bool periodic);
   // camera_wait_s > 0: sends on every waiting scan the camera has reported up to (all with `flush`), each
   // after the held sightings stamped before it.
   void SendWaitingScans(bool flush, MappingUpdate* update);

@@ -79,6 +79,14 @@ struct SlamBackEndOptions {
   // loop_closure_check_rounds times per solve. 0: off.
   double loop_closure_max_residual_sigmas = 9.0;
   int loop_closure_check_rounds = 3;
+  // The same check for the sequential alignments (in the same rounds, also after a solve without loop
+  // closures): one the solution misses by more than this many sigmas is dropped from this solve. (Every
+  // alignment, sequential or loop closure, takes the Huber kernel of graph.huber_sigmas: a false one would
+  // otherwise pull the solution onto itself and hide its residual.) A person
+  // walking near the robot is the one thing along a featureless corridor an alignment can lock onto; seen at
+  // two places in two scans 4 m apart, it made an alignment 1 m short with the information of a door frame
+  // (docs/slam.md, "Live runs"). 0: off.
+  double sequential_max_residual_sigmas = 9.0;
   // Who proposes loop closures first. 1: the front end's poses, before the first solve; then that solve's.
   // 2: a first solve without closures, then the front end's poses for the nodes that found none, then the
   // solution's again. 0 (auto): 2 when a plate was read from two nodes at least loop_closure_min_separation
@@ -144,6 +152,7 @@ struct SlamBackEndResult {
   int loop_closures = 0;                    // in the final graph
   int loop_closures_dropped = 0;            // by the consistency check (loop_closure_max_residual_sigmas) or
                                             // because they no longer align from the solution
+  int sequential_alignments_dropped = 0;    // by the consistency check (sequential_max_residual_sigmas)
   int plate_readings = 0;
   int nodes_on_mapped_ground = 0;           // nodes added without their scan (max_nodes_per_place)
   int mapped_ground_alignments = 0;         // ... of them aligned with their place's node (in the graph)
@@ -230,7 +239,9 @@ class SlamBackEnd {
   }
   // The graph without loop closures: nodes at the front end's poses, odometry, sequential alignments and
   // plates (landmark index per plate id into `landmark_of_plate`).
-  PoseGraph BaseGraph(std::map<int, int>* landmark_of_plate, const std::vector<Pose2D>& history) const;
+  // `sequential_kept`: per sequential alignment (sequential_edges_), whether it goes in.
+  PoseGraph BaseGraph(std::map<int, int>* landmark_of_plate, const std::vector<Pose2D>& history,
+                      const std::vector<bool>& sequential_kept) const;
   // Whether history edges (front_end_history_sigma_m > 0) hold nodes from..to together: all of them pinned.
   // Such a span takes no odometry edge and no sequential alignment (none is computed).
   bool HistoryHolds(int from, int to) const;

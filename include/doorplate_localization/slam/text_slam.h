@@ -92,11 +92,13 @@ class TextSlam {
 
   // Solves the back end's graph over every node and plate reading so far and keeps the result for the
   // getters below (no-op with the back end off or before the first scan). The only call that solves.
-  // A node whose fused points still wait for the scans after it (back_end.node_fusion.scans_after) is
-  // finished with the scans so far, unless `periodic` (a solve while the run goes on): then it keeps
-  // waiting and takes no alignment in this solve (SlamBackEnd::Optimize's pending_node), so periodic solves
-  // leave the final solve exactly as it would be without them.
-  void Solve(bool periodic = false);
+  // A node whose fused points still wait for the scans after it (back_end.node_fusion.scans_after) keeps
+  // waiting and takes no alignment in this solve (SlamBackEnd::Optimize's pending_node; odometry and plates
+  // hold it), so solves in the middle of a run (map updates, saves) change nothing the final one computes.
+  void Solve();
+  // The end of the input: a node still waiting for scans after it takes its points fused with those so far
+  // (the next Solve() aligns it). Scans may still follow (they are mapped as usual).
+  void FinishInput();
 
   // The map (map_server-ready: -1 unknown, 0 free, 100 occupied): every processed scan rendered at
   // Trajectory()'s poses when the back end is on and was solved, else the best particle's map. Renders
