@@ -11,14 +11,9 @@
 namespace doorplate_localization {
 namespace {
 
-MappingSessionOptions FewParticles(int n) {
-  MappingSessionOptions o;
-  o.slam.slam.num_particles = n;
-  return o;
-}
-
 TEST(MappingSession, MapUpdateIntervalSolvesAfterProcessedScansThatFarApartInStampTime) {
-  MappingSessionOptions o = FewParticles(3);
+  MappingSessionOptions o;  // few particles: these tests are about solves, not the filter
+  o.slam.slam.num_particles = 3;
   o.map_update_interval_s = 4.0;
   MappingSession session(o);
   int solves = 0;
@@ -38,7 +33,8 @@ TEST(MappingSession, MapUpdateIntervalSolvesAfterProcessedScansThatFarApartInSta
 }
 
 TEST(MappingSession, ASolveShareDefersPeriodicSolvesByWallClockAndLeavesTheFinalSolveAsIs) {
-  MappingSessionOptions o = FewParticles(3);
+  MappingSessionOptions o;  // few particles: these tests are about solves, not the filter
+  o.slam.slam.num_particles = 3;
   o.map_update_interval_s = 4.0;
   MappingSession free_running(o);
   o.map_update_max_solve_share = 0.25;
@@ -71,7 +67,8 @@ TEST(MappingSession, ASolveShareDefersPeriodicSolvesByWallClockAndLeavesTheFinal
 // solve that finished the newest node's fusion early (with the scans before it only, as before 2026-12-07)
 // gave that node other points and the map another turn.
 TEST(MappingSession, SolvesDuringTheRunLeaveTheFinalSolveAsWithoutThem) {
-  MappingSessionOptions o = FewParticles(5);
+  MappingSessionOptions o;  // few particles: these tests are about solves, not the filter
+  o.slam.slam.num_particles = 5;
   MappingSession final_only(o), saved(o);
   o.map_update_interval_s = 0.5;
   MappingSession periodic(o);
