@@ -8,7 +8,9 @@
 //    noise grows with the distance driven and the angle turned (the filter's motion model);
 //  - scan alignment (point-to-line ICP, scan_icp.h) from each node to the nodes 1, 2, 4, ... back, within
 //    `max_sequential_offset`: their information says what the laser fixes (nothing along a featureless
-//    corridor, everything near an end wall), so odometry fills in exactly where the laser cannot;
+//    corridor, everything near an end wall), so odometry fills in exactly where the laser cannot; Huber
+//    kernel, and after each solve those missed by more than `sequential_max_residual_sigmas` are left out
+//    of it (someone walking by);
 //  - loop closures: each node is aligned with the nearest node of earlier visits at least
 //    `loop_closure_min_separation` nodes away within `loop_closure_radius_m` (Huber kernel), proposed
 //    where the front end's poses and where a solve put them (in the order loop_closure_proposal_order
@@ -80,12 +82,12 @@ struct SlamBackEndOptions {
   double loop_closure_max_residual_sigmas = 9.0;
   int loop_closure_check_rounds = 3;
   // The same check for the sequential alignments (in the same rounds, also after a solve without loop
-  // closures): one the solution misses by more than this many sigmas is dropped from this solve. (Every
-  // alignment, sequential or loop closure, takes the Huber kernel of graph.huber_sigmas: a false one would
-  // otherwise pull the solution onto itself and hide its residual.) A person
+  // closures): one the solution misses by more than this many sigmas is left out of this solve. A person
   // walking near the robot is the one thing along a featureless corridor an alignment can lock onto; seen at
   // two places in two scans 4 m apart, it made an alignment 1 m short with the information of a door frame
-  // (docs/slam.md, "Live runs"). 0: off.
+  // (docs/slam.md, "Consistency check of the sequential alignments"). Every alignment, sequential or loop
+  // closure, takes the Huber kernel of graph.huber_sigmas, or a false one pulls the solution onto itself and
+  // hides its residual. 0: off.
   double sequential_max_residual_sigmas = 9.0;
   // Who proposes loop closures first. 1: the front end's poses, before the first solve; then that solve's.
   // 2: a first solve without closures, then the front end's poses for the nodes that found none, then the
