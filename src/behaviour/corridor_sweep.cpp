@@ -118,7 +118,7 @@ void CorridorSweep::Reset() {
   approaching_ = true;
   has_wall_ = false;
   turned_rad_ = 0.0;
-  blocked_since_s_.reset();
+  blocked_.Reset();
   wall_direction_odom_rad_.reset();
   back_direction_odom_rad_.reset();
   gate_dropped_ = false;
@@ -170,7 +170,7 @@ VelocityCommand CorridorSweep::Step(const std::vector<float>& ranges_m, double a
   WallFollowState state;
   const VelocityCommand command = follower_.Command(steer, &state);
   if (state != WallFollowState::kEndReached) {
-    blocked_since_s_.reset();
+    blocked_.Reset();
     return command;
   }
   // The leg's direction relative to the robot: the followed wall's fit, or on the way back without one the
@@ -183,15 +183,15 @@ VelocityCommand CorridorSweep::Step(const std::vector<float>& ranges_m, double a
   }
   if (leg_angle_rad && std::fabs(*leg_angle_rad) > options_.end_max_wall_angle_rad) {
     // Turned across the corridor: a side wall, not the corridor's end. Turn back along the leg.
-    blocked_since_s_.reset();
+    blocked_.Reset();
     return {0.0, std::copysign(options_.turn_speed_rps, *leg_angle_rad)};
   }
-  if (!blocked_since_s_) blocked_since_s_ = time_s;
+  const double held_s = blocked_.Held(time_s);
   const double wait_s = BlockingWidth(ranges_m, angle_min_rad, angle_increment_rad) >= options_.end_min_width_m
                             ? options_.end_confirm_s
                             : options_.narrow_end_confirm_s;
-  if (time_s - *blocked_since_s_ < wait_s) return command;  // a stop: wait for it to clear
-  blocked_since_s_.reset();
+  if (held_s < wait_s) return command;  // a stop: wait for it to clear
+  blocked_.Reset();
   if (phase_ == SweepPhase::kFollowBack) {
     phase_ = SweepPhase::kDone;
     return {};

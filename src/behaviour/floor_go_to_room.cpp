@@ -43,7 +43,7 @@ bool FloorGoToRoom::Start(const RoomGoal& goal, const Pose2D& robot_in_map) {
   goal_ = goal;
   reason_.clear();
   replans_ = 0;
-  blocked_since_s_ = -1.0;
+  blocked_.Reset();
   path_ = planner_.Plan(robot_in_map.Position(), goal.pose.Position());
   if (!path_.found) {
     Refuse(path_.failure);
@@ -95,10 +95,10 @@ VelocityCommand FloorGoToRoom::Step(const std::vector<float>& ranges_m, double a
     return {};
   }
   if (follow == PathFollowState::kBlocked) {
-    if (blocked_since_s_ < 0.0) blocked_since_s_ = stamp_s;
-    if (stamp_s - blocked_since_s_ > options_.max_blocked_s) {
+    const double held_s = blocked_.Held(stamp_s);
+    if (held_s > options_.max_blocked_s) {
       char why[128];
-      std::snprintf(why, sizeof(why), "blocked for %.0f s by an obstacle %.2f m ahead", stamp_s - blocked_since_s_,
+      std::snprintf(why, sizeof(why), "blocked for %.0f s by an obstacle %.2f m ahead", held_s,
                     follower_.obstacle_ahead_m());
       reason_ = why;
       follower_.Stop();
@@ -106,7 +106,7 @@ VelocityCommand FloorGoToRoom::Step(const std::vector<float>& ranges_m, double a
     }
     return {};
   }
-  blocked_since_s_ = -1.0;
+  blocked_.Reset();
   if (follow != PathFollowState::kFacing && follower_.cross_track_m() > options_.max_path_deviation_m) {
     if (!Replan(pose)) {
       follower_.Stop();

@@ -82,7 +82,7 @@ void GoToRoom::Start(const RoomGoal& goal) {
   remaining_m_ = 0.0;
   yaw_error_rad_ = 0.0;
   stepped_ = false;
-  blocked_since_s_.reset();
+  blocked_.Reset();
   state_ = GoToRoomState::kTurning;  // the first Step decides whether a turn is needed
 }
 
@@ -155,16 +155,16 @@ VelocityCommand GoToRoom::Drive(const std::vector<float>& ranges_m, double angle
   WallFollowState follow_state;
   VelocityCommand command = follower.Command(observation, &follow_state);
   if (follow_state == WallFollowState::kEndReached) {
-    if (!blocked_since_s_) blocked_since_s_ = time_s;
-    if (time_s - *blocked_since_s_ < options_.blocked_wait_s) return {};  // a stop: wait for it to clear
+    const double held_s = blocked_.Held(time_s);
+    if (held_s < options_.blocked_wait_s) return {};  // a stop: wait for it to clear
     char why[192];
     std::snprintf(why, sizeof(why), "stopped by a wall or obstacle %.2f m ahead for %.1f s with %.2f m still to go",
-                  observation.front_distance_m, time_s - *blocked_since_s_, std::fabs(remaining_m_));
+                  observation.front_distance_m, held_s, std::fabs(remaining_m_));
     reason_ = why;
     state_ = GoToRoomState::kFailed;
     return {};
   }
-  blocked_since_s_.reset();
+  blocked_.Reset();
   const double remaining = std::fabs(remaining_m_);
   command.linear_mps =
       std::min(command.linear_mps, std::max(options_.min_approach_speed_mps, options_.approach_gain_per_s * remaining));

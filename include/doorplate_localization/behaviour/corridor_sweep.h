@@ -16,6 +16,7 @@
 #include <optional>
 #include <vector>
 
+#include "doorplate_localization/behaviour/hold_timer.h"
 #include "doorplate_localization/behaviour/wall_follower.h"
 #include "doorplate_localization/common/geometry2d.h"
 
@@ -130,7 +131,7 @@ class CorridorSweep {
   CorridorObservation wall_;
   double turned_rad_ = 0.0;       // yaw accumulated during the current turn (unsigned)
   double last_yaw_rad_ = 0.0;     // odometry yaw at the previous turn step
-  std::optional<double> blocked_since_s_;          // stopped before something ahead since then
+  HoldTimer blocked_;                              // stopped before something ahead
   std::optional<double> wall_direction_odom_rad_;  // the leg's wall direction in the odom frame
   std::optional<double> back_direction_odom_rad_;  // the way out reversed (odom frame), set at the turn
   bool gate_dropped_ = false;     // wall_gate_reset_s passed without a wall; cleared by the next fit taken

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "doorplate_localization/behaviour/grid_path_planner.h"
+#include "doorplate_localization/behaviour/hold_timer.h"
 #include "doorplate_localization/behaviour/path_follower.h"
 #include "doorplate_localization/behaviour/room_goal_planner.h"
 #include "doorplate_localization/maps/occupancy_grid.h"
@@ -77,7 +78,7 @@ class FloorGoToRoom {
   std::string reason_;
   int replans_ = 0;
   double first_plan_length_m_ = 0.0;
-  double blocked_since_s_ = -1.0;  // < 0: not blocked
+  HoldTimer blocked_;  // the path follower blocked
 };
 
 }  // namespace doorplate_localization

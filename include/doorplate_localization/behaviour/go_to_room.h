@@ -17,10 +17,10 @@
 // follower's, converged to wall_distance_m after a few metres of driving).
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 
+#include "doorplate_localization/behaviour/hold_timer.h"
 #include "doorplate_localization/behaviour/room_goal_planner.h"
 #include "doorplate_localization/behaviour/wall_follower.h"
 #include "doorplate_localization/common/geometry2d.h"
@@ -102,7 +102,7 @@ class GoToRoom {
   double remaining_m_ = 0.0;
   double yaw_error_rad_ = 0.0;
   bool stepped_ = false;  // Step ran since Start: remaining_m_ is known
-  std::optional<double> blocked_since_s_;  // stopped before something ahead since then
+  HoldTimer blocked_;     // stopped before something ahead
 };
 
 }  // namespace doorplate_localization
