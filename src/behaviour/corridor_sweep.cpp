@@ -26,6 +26,8 @@ const CorridorSweepOptions& Validated(const CorridorSweepOptions& o) {
   Require(o.wall_gate_m > 0, "wall_gate_m", "must be > 0");
   Require(o.min_wall_span_m >= 0, "min_wall_span_m", "must be >= 0");
   Require(o.max_wall_turn_rad >= 0 && o.max_wall_turn_rad < M_PI / 2, "max_wall_turn_rad", "must be in [0, pi/2)");
+  Require(o.direction_settle_fits >= 1, "direction_settle_fits", "must be >= 1");
+  Require(o.direction_settle_spread_rad >= 0, "direction_settle_spread_rad", "must be >= 0");
   Require(o.wall_direction_gain > 0 && o.wall_direction_gain <= 1, "wall_direction_gain", "must be in (0, 1]");
   Require(o.wall_gate_reset_s > 0 && std::isfinite(o.wall_gate_reset_s), "wall_gate_reset_s", "must be finite and > 0");
   Require(o.wall_reacquire_s > o.wall_gate_reset_s && std::isfinite(o.wall_reacquire_s), "wall_reacquire_s",
@@ -119,7 +121,7 @@ void CorridorSweep::Reset() {
   has_wall_ = false;
   turned_rad_ = 0.0;
   blocked_.Reset();
-  wall_direction_odom_rad_.reset();
+  ForgetWallDirection();
   back_direction_odom_rad_.reset();
   gate_dropped_ = false;
 }
@@ -155,7 +157,7 @@ VelocityCommand CorridorSweep::Step(const std::vector<float>& ranges_m, double a
     gate_dropped_ = true;
   } else if (!approaching_ && time_s - last_wall_s_ > options_.wall_reacquire_s) {
     // No wall taken for this long: the leg's direction may be wrong. Start over as after the approach.
-    wall_direction_odom_rad_.reset();
+    ForgetWallDirection();
     gate_dropped_ = false;
     last_wall_s_ = time_s;
   }
@@ -201,12 +203,17 @@ VelocityCommand CorridorSweep::Step(const std::vector<float>& ranges_m, double a
       NormalizeAngle((wall_direction_odom_rad_ ? *wall_direction_odom_rad_ : odom_pose.theta_rad) + M_PI);
   approaching_ = true;  // the way back starts at the far wall's distance
   has_wall_ = false;
-  wall_direction_odom_rad_.reset();
+  ForgetWallDirection();
   gate_dropped_ = false;
   turned_rad_ = 0.0;
   last_yaw_rad_ = odom_pose.theta_rad;
   last_observation_ = approach;
   return Turn(approach, odom_pose);
+}
+
+void CorridorSweep::ForgetWallDirection() {
+  wall_direction_odom_rad_.reset();
+  settling_directions_odom_rad_.clear();
 }
 
 CorridorObservation CorridorSweep::ObserveGated(const std::vector<float>& ranges_m, double angle_min_rad,
@@ -248,9 +255,27 @@ void CorridorSweep::CheckWallDirection(const Pose2D& odom_pose, CorridorObservat
   if (!(options_.max_wall_turn_rad > 0)) return;
   const double direction = NormalizeAngle(odom_pose.theta_rad + observation->wall_angle_rad);
   if (!wall_direction_odom_rad_) {
-    // Taken only once the robot runs parallel to the fit: a fit made while it still turns towards the wall
+    // Taken only from fits the robot runs parallel to: a fit made while it still turns towards the wall
     // (after the approach, after a kidnap) can be off by more than the check's tolerance.
-    if (std::fabs(observation->wall_angle_rad) <= options_.parallel_tolerance_rad) wall_direction_odom_rad_ = direction;
+    std::vector<double>& fits = settling_directions_odom_rad_;
+    if (std::fabs(observation->wall_angle_rad) > options_.parallel_tolerance_rad) {
+      fits.clear();
+      return;
+    }
+    fits.push_back(direction);
+    if (fits.size() > static_cast<size_t>(options_.direction_settle_fits)) fits.erase(fits.begin());
+    if (fits.size() < static_cast<size_t>(options_.direction_settle_fits)) return;
+    double low = 0.0, high = 0.0, sum = 0.0;  // about the first fit, so the angles do not wrap
+    for (const double fit : fits) {
+      const double offset = NormalizeAngle(fit - fits.front());
+      low = std::min(low, offset);
+      high = std::max(high, offset);
+      sum += offset;
+    }
+    if (high - low <= options_.direction_settle_spread_rad) {
+      wall_direction_odom_rad_ = NormalizeAngle(fits.front() + sum / static_cast<double>(fits.size()));
+      fits.clear();
+    }
     return;
   }
   const double turn = NormalizeAngle(direction - *wall_direction_odom_rad_);

@@ -62,13 +62,17 @@ struct CorridorSweepOptions {
   // On the way out with no wall fit: wait, then end, as before.
   double end_max_wall_angle_rad = 0.35;
   // Wall direction check: a corridor's wall is straight, so during a leg its direction in the odom frame
-  // (odometry yaw + fitted wall angle) stays put; it is taken from the first fit the robot runs parallel to
-  // (within parallel_tolerance_rad). A fit more than max_wall_turn_rad from the leg's wall
-  // direction is not the wall (glass with a room behind it, a bench, a person beside the robot): the wall
-  // counts as not found, and while no wall is found the robot holds the leg's wall direction. The leg's
-  // direction follows accepted fits by wall_direction_gain per step (odometry's slow yaw drift).
+  // (odometry yaw + fitted wall angle) stays put; it is taken once direction_settle_fits fits in a row that
+  // the robot runs parallel to (within parallel_tolerance_rad) agree on it within direction_settle_spread_rad
+  // (their mean): one fit across the end of a radiator or a door frame beside the robot is tilted by that
+  // step, and the tilt changes as the robot passes it, while a wall's direction stays put. A fit more than
+  // max_wall_turn_rad from the leg's wall direction is not the wall (glass with a room behind it, a bench, a
+  // person beside the robot): the wall counts as not found, and while no wall is found the robot holds the
+  // leg's wall direction. The leg's direction follows accepted fits by wall_direction_gain per step (odometry's slow yaw drift).
   // max_wall_turn_rad 0: off.
   double max_wall_turn_rad = 0.15;
+  int direction_settle_fits = 5;
+  double direction_settle_spread_rad = 0.04;
   double wall_direction_gain = 0.05;
   // When the gated fit has found no wall for this long, the gate's line is dropped and the next fit is made
   // from all returns again (the direction check still applies, and the line must lie no farther than
@@ -117,6 +121,8 @@ class CorridorSweep {
   // Clears observation->wall_found when the fitted wall has turned more than max_wall_turn_rad from the
   // leg's wall direction (odom frame); otherwise updates that direction.
   void CheckWallDirection(const Pose2D& odom_pose, CorridorObservation* observation);
+  // Forgets the leg's wall direction and the fits gathered towards it.
+  void ForgetWallDirection();
   // The follower's observation with the wall fitted only to returns within wall_gate_m of wall_.
   CorridorObservation ObserveGated(const std::vector<float>& ranges_m, double angle_min_rad,
                                    double angle_increment_rad) const;
@@ -133,6 +139,7 @@ class CorridorSweep {
   double last_yaw_rad_ = 0.0;     // odometry yaw at the previous turn step
   HoldTimer blocked_;                              // stopped before something ahead
   std::optional<double> wall_direction_odom_rad_;  // the leg's wall direction in the odom frame
+  std::vector<double> settling_directions_odom_rad_;  // the last parallel fits in a row, until it is taken
   std::optional<double> back_direction_odom_rad_;  // the way out reversed (odom frame), set at the turn
   bool gate_dropped_ = false;     // wall_gate_reset_s passed without a wall; cleared by the next fit taken
   double last_wall_s_ = 0.0;      // time of the last step with the wall found (this leg)
