@@ -297,13 +297,12 @@ int main(int argc, char** argv) {
     md << " |\n" << room_result.str()
        << "\n## The full tables\n\nThis is one run. The paper's experiments over many runs and seeds, with their "
           "commands and results:\n\n"
-       << "- Table I (plate reading): `doorplate_eval ocr --world worlds/paper_real_corridor.yaml --passes 3 --seed 1 "
+       << "- Table I (plate reading): `doorplate_eval ocr --world " << args.world << " --passes 3 --seed 1 "
           "--json OUT` — docs/results/table1-ocr.md\n"
-       << "- Table II (map length): `doorplate_eval map --world worlds/paper_real_corridor.yaml --method rbpf_text "
+       << "- Table II (map length): `doorplate_eval map --world " << args.world << " --method rbpf_text "
           "--seed S --json OUT` — docs/results/table2-map.md\n"
-       << "- Table III (global localization, kidnapping): `doorplate_eval localize --world "
-          "worlds/paper_real_corridor.yaml --method text_amcl --trials 30 --seed 1 --json OUT [--kidnap]` — "
-          "docs/results/table3-localize.md\n";
+       << "- Table III (global localization, kidnapping): `doorplate_eval localize --world " << args.world
+       << " --method text_amcl --trials 30 --seed 1 --json OUT [--kidnap]` — docs/results/table3-localize.md\n";
     dl::WriteFileAtomically(args.out + "/report.md", md.str());
     std::cout << "report written to " << args.out << "/report.md\n";
   } catch (const std::exception& e) {
