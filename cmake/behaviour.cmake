@@ -22,6 +22,8 @@ if(CATKIN_ENABLE_TESTING)
   doorplate_add_core_test(isolated_returns_test test/behaviour/isolated_returns_test.cpp doorplate_behaviour)
   doorplate_add_core_test(corridor_sweep_test test/behaviour/corridor_sweep_test.cpp doorplate_behaviour doorplate_sim)
   doorplate_add_core_test(corridor_sweep_stall_test test/behaviour/corridor_sweep_stall_test.cpp doorplate_behaviour doorplate_sim)
+  doorplate_add_core_test(corridor_sweep_direction_test test/behaviour/corridor_sweep_direction_test.cpp doorplate_behaviour
+                          doorplate_sim)
   doorplate_add_core_test(room_goal_planner_test test/behaviour/room_goal_planner_test.cpp doorplate_behaviour)
   doorplate_add_core_test(plate_route_test test/behaviour/plate_route_test.cpp doorplate_behaviour)
   doorplate_add_core_test(contour_steering_test test/behaviour/contour_steering_test.cpp doorplate_behaviour doorplate_sim)
