@@ -68,8 +68,8 @@ struct CorridorSweepOptions {
   // step, and the tilt changes as the robot passes it, while a wall's direction stays put. A fit more than
   // max_wall_turn_rad from the leg's wall direction is not the wall (glass with a room behind it, a bench, a
   // person beside the robot): the wall counts as not found, and while no wall is found the robot holds the
-  // leg's wall direction. The leg's direction follows accepted fits by wall_direction_gain per step (odometry's slow yaw drift).
-  // max_wall_turn_rad 0: off.
+  // leg's wall direction. The leg's direction follows accepted fits by wall_direction_gain per step
+  // (odometry's slow yaw drift). max_wall_turn_rad 0: off.
   double max_wall_turn_rad = 0.15;
   int direction_settle_fits = 5;
   double direction_settle_spread_rad = 0.04;
