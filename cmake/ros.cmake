@@ -39,20 +39,14 @@ add_dependencies(doorplate_nodelets ${PROJECT_NAME}_generate_messages_cpp)
 install(TARGETS doorplate_nodelets LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
-  catkin_add_gtest(sim_conversions_test test/ros/sim_conversions_test.cpp)
-  target_include_directories(sim_conversions_test PRIVATE ${catkin_INCLUDE_DIRS})
-  target_link_libraries(sim_conversions_test doorplate_nodelets GTest::gtest_main ${catkin_LIBRARIES})
+  doorplate_add_ros_test(sim_conversions_test test/ros/sim_conversions_test.cpp doorplate_nodelets)
 
   # One test per source of doorplate_ros_conversions.
   foreach(source scan_conversions pose_conversions map_conversions text_detection_conversions tf_lookup lift_ride)
-    catkin_add_gtest(${source}_test test/ros/${source}_test.cpp)
-    target_include_directories(${source}_test PRIVATE ${catkin_INCLUDE_DIRS})
-    target_link_libraries(${source}_test doorplate_ros_conversions GTest::gtest_main ${catkin_LIBRARIES})
+    doorplate_add_ros_test(${source}_test test/ros/${source}_test.cpp doorplate_ros_conversions)
   endforeach()
 
-  catkin_add_gtest(text_conversions_test test/ros/text_conversions_test.cpp)
-  target_include_directories(text_conversions_test PRIVATE ${catkin_INCLUDE_DIRS})
-  target_link_libraries(text_conversions_test doorplate_nodelets GTest::gtest_main ${catkin_LIBRARIES})
+  doorplate_add_ros_test(text_conversions_test test/ros/text_conversions_test.cpp doorplate_nodelets)
 
   # rostests: a nodelet manager loads our nodelets through pluginlib; the checker waits on topics.
   # The checker also tests LoadCorridorSimOptions (needs a parameter server), hence src/ros and the library.
@@ -102,9 +96,7 @@ install(TARGETS doorplate_mission_report RUNTIME DESTINATION ${CATKIN_PACKAGE_BI
 if(CATKIN_ENABLE_TESTING)
   doorplate_add_core_test(report_layout_test test/ros/report_layout_test.cpp doorplate_report_figures)
   doorplate_add_core_test(report_figures_test test/ros/report_figures_test.cpp doorplate_report_figures)
-  catkin_add_gtest(mission_bags_test test/ros/mission_bags_test.cpp)
-  target_include_directories(mission_bags_test PRIVATE ${catkin_INCLUDE_DIRS})
-  target_link_libraries(mission_bags_test doorplate_mission_bags GTest::gtest_main ${catkin_LIBRARIES})
+  doorplate_add_ros_test(mission_bags_test test/ros/mission_bags_test.cpp doorplate_mission_bags)
   catkin_add_gtest(bag_reader_test test/ros/bag_reader_test.cpp)
   target_link_libraries(bag_reader_test doorplate_bag_reader GTest::gtest_main ${catkin_LIBRARIES})
   add_dependencies(bag_reader_test ${PROJECT_NAME}_generate_messages_cpp)  # checks the detections layout

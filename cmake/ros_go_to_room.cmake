@@ -16,19 +16,14 @@ add_dependencies(doorplate_go_to_room_nodelet ${PROJECT_NAME}_generate_messages_
 install(TARGETS doorplate_go_to_room_nodelet LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
-  catkin_add_gtest(go_to_room_conversions_test test/ros/go_to_room_conversions_test.cpp)
-  target_include_directories(go_to_room_conversions_test PRIVATE src/ros ${catkin_INCLUDE_DIRS})
-  target_link_libraries(go_to_room_conversions_test doorplate_go_to_room_nodelet GTest::gtest_main
-                        ${catkin_LIBRARIES})
+  doorplate_add_ros_test(go_to_room_conversions_test test/ros/go_to_room_conversions_test.cpp
+                         doorplate_go_to_room_nodelet)
 
   # The building goal's phases (lift, ride, search) on the built-in two-floor hospital's maps. No ROS master.
-  catkin_add_gtest(building_goal_test test/ros/building_goal_test.cpp)
-  target_include_directories(building_goal_test PRIVATE src/ros ${catkin_INCLUDE_DIRS})
-  target_link_libraries(building_goal_test doorplate_go_to_room_nodelet GTest::gtest_main ${catkin_LIBRARIES})
+  doorplate_add_ros_test(building_goal_test test/ros/building_goal_test.cpp doorplate_go_to_room_nodelet)
 
-  catkin_add_gtest(background_calls_test test/ros/background_calls_test.cpp)
-  target_include_directories(background_calls_test PRIVATE src/ros ${catkin_INCLUDE_DIRS})
-  target_link_libraries(background_calls_test doorplate_go_to_room_nodelet GTest::gtest_main ${catkin_LIBRARIES})
+  doorplate_add_ros_test(background_calls_test test/ros/background_calls_test.cpp
+                         doorplate_go_to_room_nodelet)
 
   # Simulator (ground-truth map -> odom as the localizer) + go-to-room in one manager: rooms ahead and
   # behind are reached, an unknown room is refused, no pose means no driving. The checker also tests

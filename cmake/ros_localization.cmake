@@ -15,25 +15,20 @@ add_dependencies(doorplate_localization_nodelet ${PROJECT_NAME}_generate_message
 install(TARGETS doorplate_localization_nodelet LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
-  catkin_add_gtest(amcl_conversions_test test/ros/amcl_conversions_test.cpp)
-  target_include_directories(amcl_conversions_test PRIVATE ${catkin_INCLUDE_DIRS})
-  target_link_libraries(amcl_conversions_test doorplate_localization_nodelet GTest::gtest_main ${catkin_LIBRARIES})
+  doorplate_add_ros_test(amcl_conversions_test test/ros/amcl_conversions_test.cpp
+                         doorplate_localization_nodelet)
 
   # The floors the localizer runs on: ~building_file, ~map_file and ~text_map_file loaded, the session started
   # (laser only on one floor whose text map the session refuses). No ROS master.
-  catkin_add_gtest(text_amcl_building_test test/ros/text_amcl_building_test.cpp)
-  target_include_directories(text_amcl_building_test PRIVATE src/ros ${catkin_INCLUDE_DIRS})
-  target_link_libraries(text_amcl_building_test doorplate_localization_nodelet GTest::gtest_main ${catkin_LIBRARIES})
+  doorplate_add_ros_test(text_amcl_building_test test/ros/text_amcl_building_test.cpp
+                         doorplate_localization_nodelet)
 
   # The scan input: broken scans refused, the others held until tf has them, drops described (no ROS master).
-  catkin_add_gtest(scan_tf_filter_test test/ros/scan_tf_filter_test.cpp)
-  target_include_directories(scan_tf_filter_test PRIVATE src/ros ${catkin_INCLUDE_DIRS})
-  target_link_libraries(scan_tf_filter_test doorplate_localization_nodelet GTest::gtest_main ${catkin_LIBRARIES})
+  doorplate_add_ros_test(scan_tf_filter_test test/ros/scan_tf_filter_test.cpp doorplate_localization_nodelet)
 
   # cfg/TextAmcl.cfg against the parameter table and docs; a request through the startup checks (no ROS master).
-  catkin_add_gtest(text_amcl_reconfigure_test test/ros/text_amcl_reconfigure_test.cpp)
-  target_include_directories(text_amcl_reconfigure_test PRIVATE src/ros ${catkin_INCLUDE_DIRS})
-  target_link_libraries(text_amcl_reconfigure_test doorplate_localization_nodelet GTest::gtest_main ${catkin_LIBRARIES})
+  doorplate_add_ros_test(text_amcl_reconfigure_test test/ros/text_amcl_reconfigure_test.cpp
+                         doorplate_localization_nodelet)
 
   # Text AMCL alone on a map file: its reconfigure service takes a good value (it takes effect) and refuses
   # bad ones (the values in force stay).

@@ -25,9 +25,8 @@ target_link_libraries(doorplate_map_bag doorplate_mapping_conversions doorplate_
 install(TARGETS doorplate_map_bag RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
-  catkin_add_gtest(slam_conversions_test test/ros/slam_conversions_test.cpp)
-  target_include_directories(slam_conversions_test PRIVATE ${catkin_INCLUDE_DIRS})
-  target_link_libraries(slam_conversions_test doorplate_mapping_conversions GTest::gtest_main ${catkin_LIBRARIES})
+  doorplate_add_ros_test(slam_conversions_test test/ros/slam_conversions_test.cpp
+                         doorplate_mapping_conversions)
 
   # Writes a tiny synthetic bag with the rosbag API (simulated corridor) and runs doorplate_map_bag on it.
   catkin_add_gtest(slam_mapping_map_bag_test test/ros/slam_mapping_map_bag_test.cpp)

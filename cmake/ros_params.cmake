@@ -4,8 +4,7 @@
 if(CATKIN_ENABLE_TESTING)
   doorplate_add_core_test(param_table_test test/ros/param_table_test.cpp doorplate_common)
 
-  catkin_add_gtest(param_tables_test test/ros/param_tables_test.cpp)
-  target_include_directories(param_tables_test PRIVATE src/ros ${catkin_INCLUDE_DIRS})
-  target_link_libraries(param_tables_test doorplate_nodelets doorplate_go_to_room_nodelet
-                        doorplate_localization_nodelet doorplate_mapping_nodelet yaml-cpp GTest::gtest_main ${catkin_LIBRARIES})
+  doorplate_add_ros_test(param_tables_test test/ros/param_tables_test.cpp
+                         doorplate_nodelets doorplate_go_to_room_nodelet doorplate_localization_nodelet
+                         doorplate_mapping_nodelet yaml-cpp)
 endif()

@@ -26,11 +26,13 @@
 #include "doorplate_localization/maps/text_map.h"
 #include "doorplate_localization/slam/rbpf_slam_options.h"
 #include "slam_mapping_options.h"
+#include "diagnostics_entry.h"
 #include "rostest_util.h"
 
 namespace doorplate_localization {
 namespace {
 
+using rostest_util::DiagnosticsEntry;
 using rostest_util::WaitFor;
 
 void ExpectErrorNaming(const ros::NodeHandle& nh, const std::string& parameter) {
@@ -209,26 +211,11 @@ TEST(SlamMappingNodelet, MapsTheCorridorReadsAPlateAnswersServicesAndSavesLoadab
 
 // Issue 18: the mapper's condition on /diagnostics, as the localizer's ("mapping" while it takes scans).
 TEST(SlamMappingNodelet, PublishesItsHealthOnDiagnostics) {
-  ros::NodeHandle nh;
-  diagnostic_msgs::DiagnosticStatus status;
-  bool seen = false;
-  ros::Subscriber sub = nh.subscribe<diagnostic_msgs::DiagnosticArray>(
-      "/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& m) {
-        for (const auto& s : m->status) {
-          if (s.name == "/slam_mapping: mapping") {
-            status = s;
-            seen = true;
-          }
-        }
-      });
-  const auto value = [&status](const std::string& key) {
-    for (const auto& kv : status.values) {
-      if (kv.key == key) return kv.value;
-    }
-    return std::string("(missing)");
-  };
+  const DiagnosticsEntry entry("/slam_mapping: mapping");
+  const diagnostic_msgs::DiagnosticStatus& status = entry.status();
+  const auto value = [&entry](const std::string& key) { return entry.Value(key); };
   ASSERT_TRUE(WaitFor([&] {
-    return seen && status.level == diagnostic_msgs::DiagnosticStatus::OK && value("scan rate (Hz)") != "0.0" &&
+    return entry.seen() && status.level == diagnostic_msgs::DiagnosticStatus::OK && value("scan rate (Hz)") != "0.0" &&
            value("map") != "none yet";
   }, 60.0)) << "no healthy /slam_mapping diagnostics: " << status.message;
   EXPECT_EQ(status.message.rfind("mapping", 0), 0u) << status.message;

@@ -34,12 +34,14 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include "doorplate_localization/TextDetectionArray.h"
+#include "diagnostics_entry.h"
 #include "rostest_util.h"
 #include "text_amcl_listener.h"
 
 namespace doorplate_localization {
 namespace {
 
+using rostest_util::DiagnosticsEntry;
 using rostest_util::WaitFor;
 
 double DegreesBetween(double a_rad, double b_rad) {
@@ -288,26 +290,11 @@ TEST(TextAmclNodelet, SavesTheEstimateAsTheInitialPoseAndSetMapRestartsAtTheGive
 
 // /diagnostics: the localizer's entry says what ~state says, with the scan rate and the map in force.
 TEST(TextAmclNodelet, PublishesItsHealthOnDiagnostics) {
-  ros::NodeHandle nh;
-  diagnostic_msgs::DiagnosticStatus status;
-  bool seen = false;
-  ros::Subscriber sub = nh.subscribe<diagnostic_msgs::DiagnosticArray>(
-      "/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& m) {
-        for (const auto& s : m->status) {
-          if (s.name == "/amcl: localization") {
-            status = s;
-            seen = true;
-          }
-        }
-      });
-  const auto value = [&status](const std::string& key) {
-    for (const auto& kv : status.values) {
-      if (kv.key == key) return kv.value;
-    }
-    return std::string("(missing)");
-  };
+  const DiagnosticsEntry entry("/amcl: localization");
+  const diagnostic_msgs::DiagnosticStatus& status = entry.status();
+  const auto value = [&entry](const std::string& key) { return entry.Value(key); };
   ASSERT_TRUE(WaitFor([&] {
-    return seen && value("scan rate (Hz)") != "0.0" && status.message.rfind(listener->state, 0) == 0;
+    return entry.seen() && value("scan rate (Hz)") != "0.0" && status.message.rfind(listener->state, 0) == 0;
   }, 30.0)) << "no /amcl diagnostics, or they disagree with ~state '" << listener->state << "': " << status.message;
   EXPECT_NE(value("map in force").find(" x "), std::string::npos) << value("map in force");
   EXPECT_GT(std::stod(value("scan rate (Hz)")), 1.0);
@@ -323,29 +310,24 @@ TEST(TextAmclNodelet, GlobalLocalizationBeforeAMapIsQueuedUntilOneArrives) {
   std::string state;
   std::set<std::string> states;
   geometry_msgs::PoseArray::ConstPtr cloud;
-  bool queued_on_diagnostics = false;
-  ros::Subscriber subs[3] = {
+  const DiagnosticsEntry late_diagnostics("/late/late_amcl: localization");
+  const auto queued_on_diagnostics = [&late_diagnostics] {
+    return late_diagnostics.status().message.find("queued") != std::string::npos;
+  };
+  ros::Subscriber subs[2] = {
       nh.subscribe<std_msgs::String>("late/late_amcl/state", 10,
                                      [&](const std_msgs::String::ConstPtr& m) {
                                        state = m->data;
                                        states.insert(m->data);
                                      }),
       nh.subscribe<geometry_msgs::PoseArray>("late/particlecloud", 2,
-                                             [&](const geometry_msgs::PoseArray::ConstPtr& m) { cloud = m; }),
-      nh.subscribe<diagnostic_msgs::DiagnosticArray>(
-          "/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& m) {
-            for (const auto& s : m->status) {
-              if (s.name == "/late/late_amcl: localization" && s.message.find("queued") != std::string::npos) {
-                queued_on_diagnostics = true;
-              }
-            }
-          })};
+                                             [&](const geometry_msgs::PoseArray::ConstPtr& m) { cloud = m; })};
   ASSERT_TRUE(ros::service::waitForService("late/global_localization", ros::Duration(60.0)));
   ASSERT_TRUE(WaitFor([&] { return state == "waiting_for_map"; })) << "state '" << state << "'";
   std_srvs::Empty empty;
   ASSERT_TRUE(ros::service::call("late/global_localization", empty));
   EXPECT_TRUE(WaitFor([] { return listener->Warned("/late/global_localization", "queued"); }));
-  EXPECT_TRUE(WaitFor([&] { return queued_on_diagnostics; })) << "/diagnostics does not say it is queued";
+  EXPECT_TRUE(WaitFor(queued_on_diagnostics)) << "/diagnostics does not say it is queued";
   EXPECT_EQ(state, "waiting_for_map");
 
   // The map arrives (the corridor /amcl latches): the filter starts spread over it.
