@@ -8,9 +8,11 @@
 # Writes OUT/{launch.log,driver.log,rss.csv,events.json,summary.json}; exits with the driver's status.
 # Usage: bench/nodelet_soak.sh [--sim-s S (3600)] [--cycle-s S (300)] [--rtf F (2)] [--seed N (1)]
 #                              [--out DIR (results/nodelet_soak)] [--build DIR]
+#                              [--slam-prefix CMD (run the mapper's manager under CMD, e.g. "heaptrack -o F":
+#                               the memory check then reads CMD's process, not the manager's)]
 set -euo pipefail
 repo="$(cd "$(dirname "$0")/.." && pwd)"
-sim_s=3600; cycle_s=300; rtf=2; seed=1; out="$repo/results/nodelet_soak"; build="${DOORPLATE_BUILD:-$repo/build}"
+sim_s=3600; cycle_s=300; rtf=2; seed=1; out="$repo/results/nodelet_soak"; build="${DOORPLATE_BUILD:-$repo/build}"; slam_prefix=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --sim-s) sim_s="$2"; shift 2;;
@@ -19,7 +21,8 @@ while [ $# -gt 0 ]; do
     --seed) seed="$2"; shift 2;;
     --out) out="$2"; shift 2;;
     --build) build="$2"; shift 2;;
-    *) sed -n '2,10p' "$0"; exit 2;;
+    --slam-prefix) slam_prefix="$2"; shift 2;;
+    *) sed -n '2,12p' "$0"; exit 2;;
   esac
 done
 source "$repo/scripts/env.sh" "$build" > /dev/null
@@ -28,7 +31,8 @@ port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0));
 export ROS_MASTER_URI="http://127.0.0.1:$port" ROS_HOSTNAME=127.0.0.1
 export ROS_HOME="$out/ros_home"
 rm -rf "$out"; mkdir -p "$ROS_HOME"
-roslaunch -p "$port" "$repo/bench/nodelet_soak.launch" real_time_factor:="$rtf" seed:="$seed" > "$out/launch.log" 2>&1 &
+roslaunch -p "$port" "$repo/bench/nodelet_soak.launch" real_time_factor:="$rtf" seed:="$seed" \
+  slam_manager_prefix:="$slam_prefix" > "$out/launch.log" 2>&1 &
 launch_pid=$!
 stop() { kill -INT "$launch_pid" 2>/dev/null || true; wait "$launch_pid" 2>/dev/null || true; }
 trap stop EXIT

@@ -13,6 +13,7 @@ add_library(doorplate_slam
   src/slam/slam_back_end.cpp
   src/slam/slam_back_end_odometry.cpp
   src/slam/slam_back_end_options.cpp
+  src/slam/slam_back_end_places.cpp
   src/slam/text_slam.cpp
   src/slam/text_slam_map.cpp
   src/slam/tiled_grid.cpp

@@ -116,6 +116,7 @@ const TextField kTextFields[] = {
     {"back_end.place_max_heading_diff_rad", [](T& o) { return &o.back_end.place_max_heading_diff_rad; }},
     {"back_end.place_max_odometry_displacement_fraction",
      [](T& o) { return &o.back_end.place_max_odometry_displacement_fraction; }},
+    {"back_end.place_turn_around_rad", [](T& o) { return &o.back_end.place_turn_around_rad; }},
     {"back_end.odometry_trans_m2_per_m", [](T& o) { return &o.back_end.odometry_trans_m2_per_m; }},
     {"back_end.odometry_trans_m2_per_rad", [](T& o) { return &o.back_end.odometry_trans_m2_per_rad; }},
     {"back_end.odometry_rot_rad2_per_m", [](T& o) { return &o.back_end.odometry_rot_rad2_per_m; }},

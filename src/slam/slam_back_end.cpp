@@ -44,8 +44,9 @@ SlamBackEnd::SlamBackEnd(const SlamBackEndOptions& options) : options_(Validated
 bool SlamBackEnd::AddNode(std::vector<Vec2> points, const Pose2D& odometry_pose, const Pose2D& front_end_pose,
                           bool front_end_pinned) {
   const std::optional<int> anchor = FullPlaceAnchor(front_end_pose, odometry_pose);
+  NoteTurnArounds(odometry_pose);
   nodes_.push_back({std::move(points), odometry_pose, front_end_pose, front_end_pinned, true,
-                    OdometryPathTo(odometry_pose)});
+                    OdometryPathTo(odometry_pose), turn_arounds_});
   if (!anchor) return true;
   const int node = num_nodes() - 1;
   const Pose2D guess = nodes_[*anchor].front_end.Between(front_end_pose);
@@ -75,34 +76,6 @@ void SlamBackEnd::AddPlateReading(int plate_id, int node, const Vec2& in_node_fr
                                 std::to_string(node) + " of " + std::to_string(num_nodes()));
   }
   plates_.push_back({plate_id, node, in_node_frame});
-}
-
-std::optional<int> SlamBackEnd::FullPlaceAnchor(const Pose2D& front_end_pose, const Pose2D& odometry_pose) const {
-  if (options_.max_nodes_per_place <= 0) return std::nullopt;
-  const double path_m = OdometryPathTo(odometry_pose);
-  int count = 0, nearest = -1;
-  double nearest_d = options_.place_radius_m;
-  // Earlier visits only: the nodes of this visit (a turn on the spot makes a dozen in one place) map it.
-  const int earlier_than = num_nodes() + 1 - options_.loop_closure_min_separation;  // i + separation <= new
-  for (int i = 0; i < earlier_than; ++i) {
-    if (!nodes_[i].has_points) continue;
-    const Pose2D& p = nodes_[i].front_end;
-    const double d = Norm(p.Position() - front_end_pose.Position());
-    if (d >= options_.place_radius_m ||
-        std::abs(NormalizeAngle(p.theta_rad - front_end_pose.theta_rad)) > options_.place_max_heading_diff_rad) {
-      continue;
-    }
-    const double moved_m = Norm(odometry_pose.Position() - nodes_[i].odometry.Position());
-    const double driven_m = path_m - nodes_[i].odometry_path_m;
-    if (moved_m > std::max(options_.place_radius_m,
-                           options_.place_max_odometry_displacement_fraction * driven_m)) {
-      continue;  // the same pass, driven on while the front end's pose stood still: not a revisit
-    }
-    ++count;
-    if (d < nearest_d) nearest_d = d, nearest = i;
-  }
-  if (count < options_.max_nodes_per_place) return std::nullopt;
-  return nearest;
 }
 
 const IcpReference& SlamBackEnd::Reference(int node) const {

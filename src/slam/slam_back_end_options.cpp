@@ -45,6 +45,7 @@ const SlamBackEndOptions& ValidatedSlamBackEndOptions(const SlamBackEndOptions& 
   if (!(o.place_max_odometry_displacement_fraction >= 0 && o.place_max_odometry_displacement_fraction <= 1)) {
     fail("place_max_odometry_displacement_fraction: must be in [0, 1]");
   }
+  if (!(o.place_turn_around_rad >= 0)) fail("place_turn_around_rad: must be >= 0 (0: off)");
   if (!(o.icp.point_sigma_m > 0) || !(o.icp.effective_points > 0)) fail("icp: point_sigma_m and effective_points must be > 0");
   if (!(o.icp.degenerate_min_fraction >= 0 && o.icp.degenerate_min_fraction < 1)) {
     fail("icp.degenerate_min_fraction: must be in [0, 1)");

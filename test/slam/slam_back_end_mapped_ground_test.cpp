@@ -4,6 +4,7 @@
 #include "doorplate_localization/slam/slam_back_end.h"
 
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -70,6 +71,34 @@ TEST(SlamBackEnd, OnePassWhoseFrontEndPoseStandsStillWhileOdometryDrivesOnFillsN
   strict.AddNode(PointsAt(test::Room(), {0, 0, 0}), {12.5, 0, 0}, {0, 0, 0});
   EXPECT_FALSE(strict.FullPlaceAnchor({0, 0, 0}, {5.0, 0, 0}).has_value()) << "the lap came back 5 m off";
   EXPECT_TRUE(strict.FullPlaceAnchor({0, 0, 0}, {2.3, 0, 0}).has_value()) << "within place_radius_m of nodes 4, 5";
+}
+
+// The nodelet soak (docs/results/nodelet_soak.md, 2026-12-07): the robot moved without the mapper being told
+// (a kidnap) comes back to its places with odometry displaced by the move, which the displacement rule alone
+// takes for one pass driving on. A pass after a turn-around is another visit whatever that displacement.
+TEST(SlamBackEnd, APassAfterATurnAroundIsAnotherVisitEvenWhenOdometryWasDisplaced) {
+  const auto second_pass_anchor = [](double place_turn_around_rad) {
+    SlamBackEndOptions o;
+    o.max_nodes_per_place = 1;
+    o.loop_closure_min_separation = 2;
+    o.place_turn_around_rad = place_turn_around_rad;
+    SlamBackEnd back_end(o);
+    Pose2D odometry_offset;  // odometry = front end until the kidnap
+    const auto add = [&](const Pose2D& pose) {
+      const Pose2D odometry{pose.x_m + odometry_offset.x_m, pose.y_m, pose.theta_rad};
+      back_end.AddNode(PointsAt(test::Room(), pose), odometry, pose);
+    };
+    for (int i = 0; i <= 6; ++i) add({0.5 * i, 0.0, 0.0});          // out, facing +x
+    for (int k = 1; k <= 6; ++k) add({3.0, 0.0, k * M_PI / 6});      // turn round on the spot
+    for (int i = 5; i >= 0; --i) add({0.5 * i, 0.0, M_PI});          // back
+    odometry_offset.x_m = 20.0;                                      // moved: odometry does not know
+    for (int k = 7; k <= 12; ++k) add({0.0, 0.0, k * M_PI / 6});     // turn round again
+    return back_end.FullPlaceAnchor({1.0, 0.0, 0.0}, {21.0, 0.0, 0.0});  // out again, at x = 1
+  };
+  const std::optional<int> anchor = second_pass_anchor(SlamBackEndOptions{}.place_turn_around_rad);
+  ASSERT_TRUE(anchor.has_value()) << "the node of the first pass at x = 1 fills the place";
+  EXPECT_EQ(*anchor, 2);
+  EXPECT_FALSE(second_pass_anchor(0.0).has_value()) << "odometry 20 m off after ~8 m driven: the same pass";
 }
 
 TEST(SlamBackEnd, NodesOnMappedGroundArePlacedByTheirAlignmentWithThePlaceNotByTheFrontEnd) {

@@ -56,6 +56,8 @@
 //    (Map, GetTextMap, MapToOdom), never the filter nor what the back end's nodes are made of (a solve
 //    leaves the newest node's fusion waiting for its scans until Flush(): TextSlam::Solve), so the final
 //    Flush() and Solve() give the same to the bit whatever solves (periodic, or the nodelet's saves) ran before.
+//    After a solve the heap's freed pages go back to the system (common/freed_memory.h): a solve's
+//    temporaries would otherwise keep the mapper's resident memory at its largest solve's peak.
 //  - map -> odom = estimate ∘ (odometry)⁻¹ at the last processed scan (TextSlam::EstimatedPose: the last
 //    solve's newest node ⊕ odometry since, else the best particle), recomputed after every processed
 //    scan, used plate and Solve().

@@ -131,6 +131,12 @@ struct SlamBackEndOptions {
   // after a turn-around or a lap comes back with an odometry displacement of its drift only. In [0, 1];
   // 1: no check (every earlier node in the place counts, the rule before 2026-12-07).
   double place_max_odometry_displacement_fraction = 0.5;
+  // ... or if the robot turned round since it: odometry's heading (unwrapped, node to node) moved by at least
+  // place_turn_around_rad from where it stood at the last such turn. A pass after a turn-around is another visit
+  // whatever odometry's displacement says: a robot moved without the mapper being told (a kidnap, a lift, a
+  // push) comes back to its places with odometry displaced by the move (the nodelet soak, 2026-12-07:
+  // docs/results/nodelet_soak.md). One straight pass never turns round. 0: off.
+  double place_turn_around_rad = 2.5;
   // A node's points (what the alignments match): its scan's echoes, each moved onto the line fitted to it
   // and its neighbours in the 3 scans before and the 3 after it that odometry says were taken within 0.3 m
   // and 0.015 rad of it (scan_fusion.h: less range noise, so less heading noise in every alignment; the
@@ -214,6 +220,7 @@ class SlamBackEnd {
     bool front_end_pinned = true;
     bool has_points = true;                 // false: added on mapped ground, points dropped
     double odometry_path_m = 0.0;           // distance driven (odometry) from node 0 to this node
+    int turn_arounds = 0;                   // odometry's turn-arounds from node 0 to this node (TurnAroundsAt)
   };
   struct PlateReading {
     int plate_id;
@@ -239,6 +246,10 @@ class SlamBackEnd {
     if (nodes_.empty()) return 0.0;
     return nodes_.back().odometry_path_m + Norm(odometry_pose.Position() - nodes_.back().odometry.Position());
   }
+  // The turn-arounds (place_turn_around_rad) counted so far, with a node at `odometry_pose` added next; and
+  // that count noted for a node added there (AddNode).
+  int TurnAroundsAt(const Pose2D& odometry_pose) const;
+  void NoteTurnArounds(const Pose2D& odometry_pose);
   // The graph without loop closures: nodes at the front end's poses, odometry, sequential alignments and
   // plates (landmark index per plate id into `landmark_of_plate`).
   // `sequential_kept`: per sequential alignment (sequential_edges_), whether it goes in.
@@ -279,6 +290,9 @@ class SlamBackEnd {
   mutable int solves_ = 0;                           // Optimize calls so far
   std::vector<PoseEdge> anchor_edges_;               // mapped-ground nodes aligned with their place's node
   int nodes_on_mapped_ground_ = 0;
+  double unwrapped_heading_rad_ = 0.0;  // odometry's heading at the last node, unwrapped from node 0 on
+  double turn_reference_rad_ = 0.0;     // ... at the last turn-around (or node 0)
+  int turn_arounds_ = 0;
 
 };
 
